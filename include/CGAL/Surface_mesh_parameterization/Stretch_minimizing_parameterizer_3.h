@@ -1,0 +1,379 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_PARAMETERIZER_3_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_PARAMETERIZER_3_H
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_report.h>
+#include <CGAL/Surface_mesh_parameterization/error_message.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Exposed_initializer.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Weighted_laplacian_system.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+
+#include <CGAL/Default.h>
+#include <CGAL/Eigen_solver_traits.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/circulator.h>
+
+#include <Eigen/SparseLU>
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+///
+/// The stretch-minimizing parameterization of S. Yoshizawa, A. Belyaev and H.-P. Seidel,
+/// "A moving mesh approach to stretch-minimizing mesh parameterization" (2004).
+///
+/// Starting from a fixed-border parameterization with positive weights \f$ w^0_{ij} \f$
+/// (\f$ U^0 \f$: by default Floater's shape-preserving weights on the unit square), each step
+/// computes the L2 stretch \f$ \sigma_j \f$ of every vertex (Sander et al. 2001, area-weighted
+/// over the faces around it), divides the weights by \f$ \sigma_j^{\eta} \f$ and solves again:
+/// \f$ w^{h+1}_{ij} = w^h_{ij} / \sigma_j(U^h)^{\eta} \f$. Vertices move towards the stretched
+/// regions. The iteration stops when the normalized L2 stretch of the mesh stops decreasing,
+/// and the best parameterization \f$ U^{opt} \f$ is written; one step gives \f$ U^1 \f$.
+/// The weights stay positive, so with a convex border no face flips at any step.
+///
+/// Faces of zero area in 3D or in the plane (e.g. a border ear whose three vertices land on
+/// one side of the square) are left out of the vertex stretch and of the stopping measure,
+/// and counted in the report.
+///
+/// The border, the initial weights and the solver are chosen through the template parameters;
+/// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`
+/// copies the parameterizer, so options travel inside it) or to `parameterize()` for one call.
+/// After a call, `report()` tells the stretch of every step, the step kept and why the
+/// iteration ended; copies of a parameterizer share that report, so it can be read after
+/// `CGAL::Surface_mesh_parameterization::parameterize()` too.
+///
+/// \cgalModels `Parameterizer_3`
+///
+/// \tparam TriangleMesh_ a model of `FaceGraph`
+/// \tparam InitialParameterizer_ a class derived from `Fixed_border_parameterizer_3` whose
+///         weights are positive (`Shape_preserving_parameterizer_3`,
+///         `Mean_value_coordinates_parameterizer_3`, ...). Its border parameterizer fixes the
+///         border; only its weights are used, the linear systems are solved here.
+///         <b>%Default:</b>
+/// \code
+///   Shape_preserving_parameterizer_3<TriangleMesh_, Square_border_arc_length_parameterizer_3<TriangleMesh_> >
+/// \endcode
+/// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` for an Eigen sparse solver `S` (direct or
+///         iterative); its pattern is analysed once per call. <b>%Default:</b>
+/// \code
+///   CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
+///                                             Eigen::COLAMDOrdering<int> > >
+/// \endcode
+template <class TriangleMesh_,
+          class InitialParameterizer_ = Default,
+          class SolverTraits_ = Default>
+class Stretch_minimizing_parameterizer_3
+{
+public:
+  /// Triangle mesh type
+  typedef TriangleMesh_                                       Triangle_mesh;
+  typedef TriangleMesh_                                       TriangleMesh;
+
+#ifndef DOXYGEN_RUNNING
+  typedef typename Default::Get<
+    InitialParameterizer_,
+    Shape_preserving_parameterizer_3<TriangleMesh_,
+                                     Square_border_arc_length_parameterizer_3<TriangleMesh_> > >::type
+                                                              Initial_parameterizer;
+  typedef typename Default::Get<
+    SolverTraits_,
+    CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType,
+                                              Eigen::COLAMDOrdering<int> > > >::type
+                                                              Solver_traits;
+#else
+  /// Initial parameterizer type
+  typedef InitialParameterizer_                               Initial_parameterizer;
+  /// Solver traits type
+  typedef SolverTraits_                                       Solver_traits;
+#endif
+
+  /// Border parameterizer type, the one of the initial parameterizer
+  typedef typename Initial_parameterizer::Border_parameterizer Border_parameterizer;
+
+  /// Mesh vertex type
+  typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor   vertex_descriptor;
+  /// Mesh halfedge type
+  typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
+
+  /// Default cap on the number of reweighting steps.
+  static constexpr unsigned int default_number_of_iterations = 20;
+
+  /// Builds the paper's method: \f$ \eta = 1 \f$, stop when the stretch increases.
+  /// \param initializer the parameterizer that gives the border and the weights of \f$ U^0 \f$
+  /// \param solver_traits the sparse solver
+  explicit Stretch_minimizing_parameterizer_3(const Initial_parameterizer& initializer = Initial_parameterizer(),
+                                              const Solver_traits& solver_traits = Solver_traits())
+    : m_initializer(initializer), m_solver_traits(solver_traits),
+      m_report(std::make_shared<Stretch_minimizing_report>())
+  { }
+
+  /// Builds the method with options.
+  ///
+  /// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{eta}
+  ///     \cgalParamDescription{exponent of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$;
+  ///                           smaller values take smaller, steadier steps}
+  ///     \cgalParamType{double in \f$ (0, 1] \f$ (`SMP::parameters::eta`)}
+  ///     \cgalParamDefault{1, as in the paper}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_iterations}
+  ///     \cgalParamDescription{cap on the number of reweighting steps: 0 gives \f$ U^0 \f$, 1 gives \f$ U^1 \f$}
+  ///     \cgalParamType{unsigned int}
+  ///     \cgalParamDefault{20}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{verbose}
+  ///     \cgalParamDescription{if `true`, one line per step is written to `std::cerr`}
+  ///     \cgalParamType{bool}
+  ///     \cgalParamDefault{`false`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{visitor}
+  ///     \cgalParamDescription{called after every solve with a `const Stretch_minimizing_step&`;
+  ///                           if it returns `false`, the iteration stops (the best step so far is kept).
+  ///                           It is copied: pass `std::ref(v)` to keep its state in `v`.}
+  ///     \cgalParamType{a callable returning `bool` or `void`}
+  ///     \cgalParamDefault{none}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  template <typename T, typename Tag, typename Base>
+  explicit Stretch_minimizing_parameterizer_3(const Named_function_parameters<T, Tag, Base>& np)
+    : Stretch_minimizing_parameterizer_3(Initial_parameterizer(), np)
+  { }
+
+  /// Builds the method from an initializer and options (see the constructor above).
+  template <typename T, typename Tag, typename Base>
+  Stretch_minimizing_parameterizer_3(const Initial_parameterizer& initializer,
+                                     const Named_function_parameters<T, Tag, Base>& np,
+                                     const Solver_traits& solver_traits = Solver_traits())
+    : Stretch_minimizing_parameterizer_3(initializer, solver_traits)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    m_eta = choose_parameter(get_parameter(np, internal_np::eta), 1.);
+    m_max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                        default_number_of_iterations);
+    m_verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+    m_visitor = internal::make_step_visitor(get_parameter(np, CGAL::internal_np::visitor));
+  }
+
+  /// Computes \f$ U^{opt} \f$ of the connected component of `bhd` and writes it to `uvmap`.
+  ///
+  /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and a 2D point as value
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `int` as value
+  ///         (passed on to the border parameterizer; this class numbers vertices itself)
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `bool` as value
+  ///
+  /// \param mesh the triangle mesh; only the component of `bhd` is read, and the mesh is not modified
+  /// \param bhd a halfedge on the border of that component
+  /// \param uvmap receives the parameterization of the vertices of that component (on success)
+  /// \param vimap vertex index map
+  /// \param vpmap receives `true` for every parameterized vertex
+  /// \param np options overriding those given to the constructor for this call
+  ///        (`eta`, `number_of_iterations`, `verbose`, `visitor`)
+  ///
+  /// \returns `OK`, or:
+  /// - `ERROR_WRONG_PARAMETER`: `eta` outside \f$ (0, 1] \f$, `bhd` not a border halfedge, or
+  ///   a non-finite vertex coordinate;
+  /// - `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NO_TOPOLOGICAL_DISC` (no border,
+  ///   several boundaries, handles);
+  /// - the error of the border parameterizer (e.g. `ERROR_BORDER_TOO_SHORT`);
+  /// - `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`: initial weights not finite and positive (zero-length
+  ///   edges), or the solver failed;
+  /// - `ERROR_NO_1_TO_1_MAPPING`: already \f$ U^0 \f$ has flipped faces (non-convex border).
+  ///
+  /// `report().message` says more. On an error, no interior vertex is written (the border
+  /// parameterizer may already have written the border).
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap,
+            typename NamedParameters = parameters::Default_named_parameters>
+  Error_code parameterize(Triangle_mesh& mesh,
+                          halfedge_descriptor bhd,
+                          VertexUVmap uvmap,
+                          VertexIndexMap vimap,
+                          VertexParameterizedMap vpmap,
+                          const NamedParameters& np = parameters::default_values())
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    const double eta = choose_parameter(get_parameter(np, internal_np::eta), m_eta);
+    const unsigned int cap = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                              m_max_iterations);
+    const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), m_verbose);
+    internal::Step_visitor visitor = internal::make_step_visitor(get_parameter(np, CGAL::internal_np::visitor));
+    if(!visitor)
+      visitor = m_visitor;
+    return run(mesh, bhd, uvmap, vimap, vpmap, eta, cap, verbose, visitor);
+  }
+
+  /// The outcome of the last call of `parameterize()` on this object or a copy of it.
+  const Stretch_minimizing_report& report() const { return *m_report; }
+
+  /// The exponent \f$ \eta \f$ given to the constructor.
+  double eta() const { return m_eta; }
+
+  /// The cap on the number of steps given to the constructor.
+  unsigned int number_of_iterations() const { return m_max_iterations; }
+
+  /// The parameterizer that gives the border and the weights of \f$ U^0 \f$.
+  Initial_parameterizer& initial_parameterizer() { return m_initializer; }
+
+private:
+  typedef typename boost::property_traits<
+            typename boost::property_map<Triangle_mesh, vertex_point_t>::const_type>::value_type Point_3;
+
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code run(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+                 VertexIndexMap vimap, VertexParameterizedMap vpmap,
+                 double eta, unsigned int cap, bool verbose, const internal::Step_visitor& visitor)
+  {
+    typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
+    const auto start = std::chrono::steady_clock::now();
+    Stretch_minimizing_report& rep = *m_report;
+    rep = Stretch_minimizing_report();
+    auto fail = [&rep](Error_code e, const std::string& why) {
+      rep.status = e;
+      rep.message = why;
+      return e;
+    };
+
+    if(!(eta > 0. && eta <= 1.))
+      return fail(ERROR_WRONG_PARAMETER, "eta must be in (0, 1]");
+
+    internal::Disk_component<Triangle_mesh> dc;
+    Error_code status = dc.build(mesh, bhd, get(vertex_point, mesh));
+    if(status != OK)
+      return fail(status, dc.message);
+    rep.interior_vertices = dc.number_of_rows();
+    rep.border_vertices = dc.border.size();
+    rep.faces = dc.flat.tri.size();
+
+    status = m_initializer.get_border_parameterizer().parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    if(status != OK)
+      return fail(status, "the border parameterizer failed");
+    std::vector<internal::Vec2> uv(dc.vertices.size(), internal::Vec2{0., 0.});
+    for(int v : dc.border) {
+      const Point_2 p = get(uvmap, dc.vertices[v]);
+      uv[v] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
+      if(!std::isfinite(uv[v][0]) || !std::isfinite(uv[v][1]))
+        return fail(ERROR_WRONG_PARAMETER, "the border parameterizer gave a non-finite position");
+    }
+
+    std::vector<double> w;
+    if(!initial_weights(mesh, dc, w))
+      return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,
+                  "the initial weights of an interior vertex are not finite and positive "
+                  "(degenerate faces, e.g. zero-length edges, around it)");
+
+    internal::Weighted_laplacian_system<Solver_traits> system(dc);
+    internal::Flat_stretch stretch;
+    std::vector<double> sigma, factor(dc.vertices.size());
+    std::vector<internal::Vec2> best_uv;
+    for(std::size_t h = 0;; ++h) {
+      if(!system.solve(w, uv, m_solver_traits))
+        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
+      const internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv);
+
+      Stretch_minimizing_step step;
+      step.step = h;
+      step.l2_stretch = s.l2;
+      step.linf_stretch = s.linf;
+      step.flipped_faces = s.flipped;
+      step.degenerate_uv_faces = s.degenerate_uv;
+      step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      rep.history.push_back(step);
+      rep.degenerate_3d_faces = s.degenerate_3d;
+      if(verbose)
+        std::cerr << "stretch minimization: step " << h << "  L2 " << s.l2 << "  Linf " << s.linf
+                  << "  flipped " << s.flipped << "  degenerate " << s.degenerate_uv << "  "
+                  << step.seconds << " s" << std::endl;
+
+      const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;
+      const bool better = valid && (best_uv.empty() || s.l2 < rep.history[rep.kept_step].l2_stretch);
+      if(better) {
+        rep.kept_step = h;
+        best_uv = uv;
+      }
+      const bool go_on = visitor ? visitor(step) : true;
+      if(!valid)
+        rep.stop = Stretch_minimizing_stop::FLIPPED_FACES;
+      else if(!better)
+        rep.stop = Stretch_minimizing_stop::STRETCH_INCREASED;
+      else if(h >= cap)
+        rep.stop = Stretch_minimizing_stop::ITERATION_CAP;
+      else if(!go_on)
+        rep.stop = Stretch_minimizing_stop::VISITOR;
+      if(rep.stop != Stretch_minimizing_stop::NOT_RUN)
+        break;
+
+      // w_ij <- w_ij / sigma_j^eta, with sigma scaled by the mesh RMS: a common factor of all
+      // sigma_j leaves the solution unchanged and keeps the weights from drifting in magnitude
+      stretch.vertex_stretch(dc.flat, s.rms, sigma);
+      for(std::size_t v = 0; v < sigma.size(); ++v)
+        factor[v] = std::pow(sigma[v] / s.rms, -eta);
+      for(std::size_t e = 0; e < w.size(); ++e)
+        w[e] *= factor[dc.ring[e]];
+    }
+
+    if(best_uv.empty())
+      return fail(ERROR_NO_1_TO_1_MAPPING, "the initial parameterization has flipped faces");
+    for(std::size_t v = 0; v < dc.vertices.size(); ++v) {
+      put(uvmap, dc.vertices[v], Point_2(best_uv[v][0], best_uv[v][1]));
+      put(vpmap, dc.vertices[v], true);
+    }
+    rep.status = OK;
+    return OK;
+  }
+
+  // w^0 from the initializer, in the ring order of `dc`
+  bool initial_weights(const Triangle_mesh& mesh, const internal::Disk_component<Triangle_mesh>& dc,
+                       std::vector<double>& w)
+  {
+    w.resize(dc.ring.size());
+    for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
+      const vertex_descriptor v = dc.vertices[dc.interior[r]];
+      int e = dc.ring_begin[r];
+      double sum = 0.;
+      Vertex_around_target_circulator<Triangle_mesh> vj(halfedge(v, mesh), mesh), end = vj;
+      CGAL_For_all(vj, end) {
+        if(e == dc.ring_begin[r + 1])
+          return false;
+        const double wij = CGAL::to_double(m_initializer.compute_w_ij(mesh, v, vj));
+        if(!(wij >= 0.) || !std::isfinite(wij))
+          return false;
+        w[e++] = wij;
+        sum += wij;
+      }
+      if(e != dc.ring_begin[r + 1] || !(sum > 0.))
+        return false;
+    }
+    return true;
+  }
+
+  internal::Exposed_initializer<Initial_parameterizer> m_initializer;
+  Solver_traits m_solver_traits;
+  double m_eta = 1.;
+  unsigned int m_max_iterations = default_number_of_iterations;
+  bool m_verbose = false;
+  internal::Step_visitor m_visitor;
+  std::shared_ptr<Stretch_minimizing_report> m_report; // shared by copies, see the class comment
+};
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_PARAMETERIZER_3_H
