@@ -303,7 +303,9 @@ private:
                   << step.seconds << " s" << std::endl;
 
       const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;
-      const bool better = valid && (best_uv.empty() || s.l2 < rep.history[rep.kept_step].l2_stretch);
+      // a decrease at the level of rounding is no decrease: it would only prolong the iteration
+      const bool better = valid && (best_uv.empty() ||
+                                    s.l2 < rep.history[rep.kept_step].l2_stretch * (1. - 1e-10));
       if(better) {
         rep.kept_step = h;
         best_uv = uv;

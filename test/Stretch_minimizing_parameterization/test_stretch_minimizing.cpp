@@ -1,0 +1,229 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
+// minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
+// initializers and solvers, and the quality bar of the paper's Mannequin head.
+
+#include "smp_test_util.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+
+#include <Eigen/IterativeLinearSolvers>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double>      Kernel;
+typedef Kernel::Point_2                     Point_2;
+typedef Kernel::Point_3                     Point_3;
+typedef CGAL::Surface_mesh<Point_3>         Mesh;
+typedef Mesh::Vertex_index                  vertex_descriptor;
+typedef Mesh::Halfedge_index                halfedge_descriptor;
+typedef Mesh::Property_map<vertex_descriptor, Point_2> UV_map;
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+
+typedef SMP::Stretch_minimizing_parameterizer_3<Mesh> Default_smp;
+
+struct Loaded
+{
+  Mesh mesh;
+  halfedge_descriptor bhd;
+};
+
+Loaded load(const std::string& name)
+{
+  Loaded l;
+  const bool read = CGAL::IO::read_polygon_mesh(smp_test::data_file(name), l.mesh);
+  SMP_CHECK(read && !faces(l.mesh).empty(), "cannot read " << name);
+  l.bhd = CGAL::Polygon_mesh_processing::longest_border(l.mesh).first;
+  return l;
+}
+
+UV_map new_uv(Mesh& m, const std::string& name)
+{
+  return m.add_property_map<vertex_descriptor, Point_2>(name, Point_2(-7, -7)).first;
+}
+
+double max_distance(const Mesh& m, UV_map a, UV_map b)
+{
+  double d = 0.;
+  for(vertex_descriptor v : vertices(m))
+    d = (std::max)(d, std::hypot(a[v].x() - b[v].x(), a[v].y() - b[v].y()));
+  return d;
+}
+
+// The properties every run on a disk with a convex border must have.
+template <typename Parameterizer>
+void check_run(const std::string& what, Mesh& m, halfedge_descriptor bhd, Parameterizer& p, UV_map uv,
+               SMP::Error_code status)
+{
+  const SMP::Stretch_minimizing_report& r = p.report();
+  SMP_CHECK(status == SMP::OK && r.status == SMP::OK, what << ": " << SMP::error_message(status) << " " << r.message);
+  if(status != SMP::OK)
+    return;
+  double best = r.history.at(0).l2_stretch;
+  std::size_t argmin = 0;
+  for(const SMP::Stretch_minimizing_step& s : r.history) {
+    SMP_CHECK(s.flipped_faces == 0, what << ": U^" << s.step << " has " << s.flipped_faces << " flipped faces");
+    SMP_CHECK(std::isfinite(s.l2_stretch) && s.l2_stretch >= 1. - 1e-12, what << ": U^" << s.step << " L2 " << s.l2_stretch);
+    if(s.l2_stretch < best) { best = s.l2_stretch; argmin = s.step; }
+  }
+  SMP_CHECK(r.kept_step == argmin, what << ": kept U^" << r.kept_step << " but the minimum is U^" << argmin);
+
+  // what was written is what the report says
+  const SMP::Stretch_statistics st = SMP::compute_stretch_statistics(m, uv);
+  SMP_CHECK(std::abs(st.l2_stretch - r.kept().l2_stretch) < 1e-9 * st.l2_stretch,
+            what << ": written map has L2 " << st.l2_stretch << ", report says " << r.kept().l2_stretch);
+  SMP_CHECK(st.flipped_faces == 0, what << ": written map has " << st.flipped_faces << " flipped faces");
+  SMP_CHECK(st.degenerate_uv_faces == r.kept().degenerate_uv_faces, what << ": degenerate faces differ");
+  for(vertex_descriptor v : vertices(m))
+    if(!(uv[v].x() >= -1e-12 && uv[v].x() <= 1. + 1e-12 && uv[v].y() >= -1e-12 && uv[v].y() <= 1. + 1e-12)) {
+      SMP_CHECK(false, what << ": a vertex is outside the unit square (or not written)");
+      break;
+    }
+  (void)bhd;
+}
+
+void check_disk_mesh(const std::string& name)
+{
+  Loaded l = load(name);
+  Mesh& m = l.mesh;
+
+  // the paper's method, through CGAL's free function
+  UV_map uv = new_uv(m, "v:uv");
+  Default_smp p;
+  SMP::Error_code status = SMP::parameterize(m, p, l.bhd, uv);
+  check_run(name + " default", m, l.bhd, p, uv, status);
+  const SMP::Stretch_minimizing_report r = p.report();
+  SMP_CHECK(r.history.size() >= 3, name << ": U^1 already rejected");
+  if(r.history.size() >= 2)
+    SMP_CHECK(r.history[1].l2_stretch < r.history[0].l2_stretch, name << ": U^1 not below U^0");
+  SMP_CHECK(r.stop == SMP::Stretch_minimizing_stop::STRETCH_INCREASED, name << ": stopped for another reason");
+  SMP_CHECK(r.interior_vertices + r.border_vertices == num_vertices(m), name << ": vertex counts");
+  std::cout << name << ": U^0 " << r.history[0].l2_stretch << "  U^1 " << r.history[1].l2_stretch
+            << "  U^opt " << r.kept().l2_stretch << " (h = " << r.kept_step << ")  degenerate uv faces "
+            << r.kept().degenerate_uv_faces << std::endl;
+
+  // cap 0: U^0, which is Floater's shape-preserving parameterization itself
+  UV_map uv0 = new_uv(m, "v:uv0"), floater = new_uv(m, "v:floater");
+  Default_smp p0(SMP::parameters::number_of_iterations(0));
+  check_run(name + " cap 0", m, l.bhd, p0, uv0, SMP::parameterize(m, p0, l.bhd, uv0));
+  SMP_CHECK(p0.report().history.size() == 1 && p0.report().kept_step == 0
+              && p0.report().stop == SMP::Stretch_minimizing_stop::ITERATION_CAP, name << ": cap 0");
+  SMP_CHECK(SMP::parameterize(m, SMP::Shape_preserving_parameterizer_3<Mesh>(), l.bhd, floater) == SMP::OK,
+            name << ": Shape_preserving_parameterizer_3 failed");
+  SMP_CHECK(max_distance(m, uv0, floater) < 1e-8, name << ": U^0 differs from Floater's map by " << max_distance(m, uv0, floater));
+
+  // cap 1: U^1
+  UV_map uv1 = new_uv(m, "v:uv1");
+  Default_smp p1(SMP::parameters::number_of_iterations(1));
+  check_run(name + " cap 1", m, l.bhd, p1, uv1, SMP::parameterize(m, p1, l.bhd, uv1));
+  SMP_CHECK(p1.report().history.size() == 2 && p1.report().kept_step == 1, name << ": cap 1 kept U^" << p1.report().kept_step);
+  SMP_CHECK(std::abs(p1.report().kept().l2_stretch - r.history[1].l2_stretch) < 1e-12, name << ": U^1 differs between runs");
+
+  // mean-value start on a circle
+  typedef SMP::Mean_value_coordinates_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh> > MVC;
+  UV_map uvm = new_uv(m, "v:uvm");
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, MVC> pm(MVC(), SMP::parameters::eta(0.8));
+  status = SMP::parameterize(m, pm, l.bhd, uvm);
+  SMP_CHECK(status == SMP::OK, name << " MVC: " << pm.report().message);
+  if(status == SMP::OK) {
+    SMP_CHECK(pm.report().kept().l2_stretch < pm.report().history[0].l2_stretch, name << " MVC: no gain");
+    for(const auto& s : pm.report().history)
+      SMP_CHECK(s.flipped_faces == 0, name << " MVC: flipped faces at U^" << s.step);
+  }
+}
+
+void check_mannequin_bar()
+{
+  Loaded l = load("mannequin-devil.off");
+  UV_map uv = new_uv(l.mesh, "v:uv");
+  Default_smp p;
+  check_run("mannequin eta 1", l.mesh, l.bhd, p, uv, SMP::parameterize(l.mesh, p, l.bhd, uv));
+  const SMP::Stretch_minimizing_report& r = p.report();
+  SMP_CHECK(r.history.size() > 1 && r.history[1].l2_stretch <= 1.95, "mannequin U^1 " << r.history.at(1).l2_stretch);
+  SMP_CHECK(r.kept().l2_stretch <= 1.50, "mannequin U^opt (eta 1) " << r.kept().l2_stretch);
+
+  Default_smp half(SMP::parameters::eta(0.5));
+  check_run("mannequin eta 0.5", l.mesh, l.bhd, half, uv, SMP::parameterize(l.mesh, half, l.bhd, uv));
+  SMP_CHECK(half.report().kept().l2_stretch <= 1.47, "mannequin U^opt (eta 0.5) " << half.report().kept().l2_stretch);
+  std::cout << "mannequin: eta 0.5 U^opt " << half.report().kept().l2_stretch << " (h = "
+            << half.report().kept_step << ")" << std::endl;
+}
+
+void check_options_and_visitor()
+{
+  Loaded l = load("mushroom.off");
+  Mesh& m = l.mesh;
+  UV_map uv = new_uv(m, "v:uv");
+
+  // both ways of chaining the package's name with CGAL's give the same options
+  Default_smp a(SMP::parameters::eta(0.5).number_of_iterations(7).verbose(false));
+  Default_smp b(SMP::parameters::eta(0.5, CGAL::parameters::number_of_iterations(7)));
+  SMP_CHECK(a.eta() == 0.5 && b.eta() == 0.5 && a.number_of_iterations() == 7 && b.number_of_iterations() == 7,
+            "named parameters not taken");
+
+  // the visitor sees every step in order and can stop the iteration
+  std::vector<double> seen;
+  auto record = [&seen](const SMP::Stretch_minimizing_step& s) { seen.push_back(s.l2_stretch); };
+  Default_smp v(SMP::parameters::visitor(record));
+  SMP_CHECK(SMP::parameterize(m, v, l.bhd, uv) == SMP::OK, "visited run failed");
+  SMP_CHECK(seen.size() == v.report().history.size(), "visitor saw " << seen.size() << " steps");
+  for(std::size_t h = 0; h < seen.size() && h < v.report().history.size(); ++h)
+    SMP_CHECK(seen[h] == v.report().history[h].l2_stretch, "visitor saw another stretch at step " << h);
+
+  std::size_t calls = 0;
+  auto stop_at_1 = [&calls](const SMP::Stretch_minimizing_step& s) { ++calls; return s.step < 1; };
+  Default_smp stopper;
+  SMP_CHECK(stopper.parameterize(m, l.bhd, uv, get(CGAL::vertex_index, m),
+                                 m.add_property_map<vertex_descriptor, bool>("v:done", false).first,
+                                 SMP::parameters::visitor(stop_at_1)) == SMP::OK, "stopped run failed");
+  SMP_CHECK(calls == 2 && stopper.report().history.size() == 2
+              && stopper.report().stop == SMP::Stretch_minimizing_stop::VISITOR,
+            "visitor stop: " << calls << " calls, " << stopper.report().history.size() << " steps");
+
+  // per-call options override the constructor's: eta 0.25 needs more steps than eta 1
+  Default_smp slow;
+  SMP_CHECK(slow.parameterize(m, l.bhd, uv, get(CGAL::vertex_index, m),
+                              m.add_property_map<vertex_descriptor, bool>("v:done2", false).first,
+                              SMP::parameters::eta(0.25).number_of_iterations(50)) == SMP::OK, "eta 0.25 failed");
+  SMP_CHECK(slow.report().history.size() > v.report().history.size(),
+            "eta 0.25 took " << slow.report().history.size() << " steps, eta 1 " << v.report().history.size());
+
+  // an iterative solver (warm-started from the last step) gives the same map as the LU default
+  typedef CGAL::Eigen_solver_traits<Eigen::BiCGSTAB<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                                    Eigen::IncompleteLUT<double> > > Iterative;
+  Iterative iterative;
+  iterative.solver().setTolerance(1e-12);
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Iterative>
+    pi(SMP::Shape_preserving_parameterizer_3<Mesh>(), iterative);
+  UV_map uvi = new_uv(m, "v:uvi"), uvd = new_uv(m, "v:uvd");
+  Default_smp pd;
+  SMP_CHECK(SMP::parameterize(m, pi, l.bhd, uvi) == SMP::OK && SMP::parameterize(m, pd, l.bhd, uvd) == SMP::OK,
+            "iterative or direct run failed");
+  SMP_CHECK(pi.report().kept_step == pd.report().kept_step, "iterative kept another step");
+  SMP_CHECK(max_distance(m, uvi, uvd) < 1e-7, "iterative and direct differ by " << max_distance(m, uvi, uvd));
+}
+
+int main()
+{
+  for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
+                          "mushroom.off", "mannequin-devil.off"})
+    check_disk_mesh(name);
+  check_mannequin_bar();
+  check_options_and_visitor();
+  return smp_test::summary();
+}
