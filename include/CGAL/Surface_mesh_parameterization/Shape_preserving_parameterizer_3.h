@@ -117,19 +117,24 @@ public:
                           VertexIndexMap vimap,
                           VertexParameterizedMap vpmap)
   {
-    m_cached_valid = false; // the mesh may have changed since the last call
+    m_cached_valid = false;
     return Base::parameterize(mesh, bhd, uvmap, vimap, vpmap);
   }
 
 protected:
   /// Returns the shape-preserving weight of the neighbour `neighbor_vertex_v_j` of
   /// `main_vertex_v_i`. The weights of the whole ring are computed on the first query of a
-  /// vertex; NaN if they are undefined (a zero-length edge, fewer than three neighbours).
+  /// vertex (the query for the neighbour `source(halfedge(main_vertex_v_i, mesh), mesh)`, where
+  /// a walk around the ring starts); NaN if they are undefined (a zero-length edge, fewer than
+  /// three neighbours).
   virtual NT compute_w_ij(const Triangle_mesh& mesh,
                           vertex_descriptor main_vertex_v_i,
                           Vertex_around_target_circulator<Triangle_mesh> neighbor_vertex_v_j) const
   {
-    if(!m_cached_valid || m_cached_vertex != main_vertex_v_i || m_cached_mesh != &mesh)
+    // Callers walk the ring from halfedge(v_i): a query for that first neighbour starts a new
+    // walk, so the ring is recomputed then and never served stale from an earlier call.
+    if(!m_cached_valid || m_cached_vertex != main_vertex_v_i
+       || *neighbor_vertex_v_j == source(halfedge(main_vertex_v_i, mesh), mesh))
       compute_ring(mesh, main_vertex_v_i);
     for(std::size_t k = 0; k < m_neighbors.size(); ++k)
       if(m_neighbors[k] == *neighbor_vertex_v_j)
@@ -153,7 +158,6 @@ private:
     if(!m_computer.compute(to_vec(get(ppmap, v)), m_ring, m_weights))
       m_weights.assign(m_ring.size(), std::numeric_limits<double>::quiet_NaN());
     m_cached_vertex = v;
-    m_cached_mesh = &mesh;
     m_cached_valid = true;
   }
 
@@ -163,7 +167,6 @@ private:
   mutable std::vector<internal::Vec3> m_ring;
   mutable std::vector<double> m_weights;
   mutable vertex_descriptor m_cached_vertex;
-  mutable const Triangle_mesh* m_cached_mesh = nullptr;
   mutable bool m_cached_valid = false;
 };
 

@@ -262,6 +262,10 @@ private:
     rep.border_vertices = dc.border.size();
     rep.faces = dc.flat.tri.size();
 
+    // CGAL's square border finds its corners through vpmap: entries left true by an earlier
+    // call would move them
+    for(vertex_descriptor v : dc.vertices)
+      put(vpmap, v, false);
     status = m_initializer.get_border_parameterizer().parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != OK)
       return fail(status, "the border parameterizer failed");

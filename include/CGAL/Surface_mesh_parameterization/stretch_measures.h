@@ -115,14 +115,15 @@ void flatten(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uv
 /// \tparam FaceRange a range of `face_descriptor`
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D point
-/// \tparam NamedParameters a sequence of \ref bgl_namedparameters "Named Parameters"
-/// \param np optional: `vertex_point_map` (default `get(CGAL::vertex_point, tm)`)
+/// \param np optional \ref bgl_namedparameters "Named Parameters": `vertex_point_map`
+///        (default `get(CGAL::vertex_point, tm)`)
 /// \pre every face of `face_range` is a triangle and every vertex of it has a uv position
 template <typename FaceRange, typename TriangleMesh, typename VertexUVMap,
-          typename NamedParameters = parameters::Default_named_parameters>
+          typename T = bool, typename Tag = CGAL::internal_np::all_default_t,
+          typename Base = CGAL::internal_np::No_property>
 Stretch_statistics compute_stretch_statistics(const FaceRange& face_range, const TriangleMesh& tm,
                                               VertexUVMap uvmap,
-                                              const NamedParameters& np = parameters::default_values())
+                                              const Named_function_parameters<T, Tag, Base>& np = parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -152,10 +153,18 @@ Stretch_statistics compute_stretch_statistics(const FaceRange& face_range, const
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// Measures the parameterization `uvmap` over all faces of `tm`
 /// (see the overload taking a face range).
-template <typename TriangleMesh, typename VertexUVMap,
-          typename NamedParameters = parameters::Default_named_parameters>
+template <typename TriangleMesh, typename VertexUVMap>
+Stretch_statistics compute_stretch_statistics(const TriangleMesh& tm, VertexUVMap uvmap)
+{
+  return compute_stretch_statistics(faces(tm), tm, uvmap, parameters::default_values());
+}
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+/// Measures the parameterization `uvmap` over all faces of `tm`, with named parameters
+/// (see the overload taking a face range).
+template <typename TriangleMesh, typename VertexUVMap, typename T, typename Tag, typename Base>
 Stretch_statistics compute_stretch_statistics(const TriangleMesh& tm, VertexUVMap uvmap,
-                                              const NamedParameters& np = parameters::default_values())
+                                              const Named_function_parameters<T, Tag, Base>& np)
 {
   return compute_stretch_statistics(faces(tm), tm, uvmap, np);
 }

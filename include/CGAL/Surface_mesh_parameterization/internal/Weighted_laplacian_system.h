@@ -22,9 +22,9 @@ namespace internal {
 // The system sum_j w_ij (u_i - u_j) = 0 over the interior vertices, border vertices moved to
 // the right-hand side, each row divided by its weight sum (same solution, better scaled).
 //
-// Only the weights change between steps, so the sparsity pattern is built and analysed once,
-// values are rewritten in place, and one factorization serves the u and v columns together.
-// Iterative solvers start from the previous solution.
+// Only the weights change between steps, so the sparsity pattern is built once and analysed
+// once by direct solvers, values are rewritten in place, and one factorization serves the u and
+// v columns together. Iterative solvers start from the previous solution.
 template <typename SolverTraits>
 class Weighted_laplacian_system
 {
@@ -89,17 +89,23 @@ public:
     }
 
     Eigen_solver& solver = traits.solver();
-    if(!m_analysed) {
-      solver.analyzePattern(m_A);
-      m_analysed = true;
-    }
-    solver.factorize(m_A);
-    if(solver.info() != Eigen::Success)
-      return false;
-    if constexpr(iterative)
+    if constexpr(iterative) {
+      // the preconditioner is rebuilt whole: Eigen 3.4's IncompleteLUT leaves its status
+      // unset after analyzePattern() alone
+      solver.compute(m_A);
+      if(solver.info() != Eigen::Success)
+        return false;
       m_X = solver.solveWithGuess(m_B, m_X);
-    else
+    } else {
+      if(!m_analysed) {
+        solver.analyzePattern(m_A);
+        m_analysed = true;
+      }
+      solver.factorize(m_A);
+      if(solver.info() != Eigen::Success)
+        return false;
       m_X = solver.solve(m_B);
+    }
     if(solver.info() != Eigen::Success || !m_X.allFinite())
       return false;
     for(Eigen::Index i = 0; i < n; ++i)
