@@ -760,22 +760,6 @@ void test_eta()
   check_success("bad eta overridden per call", m, bhd, maps, p);
 }
 
-// Several boundaries (pig: a sphere with 7 holes, blade: an annulus), bhd on the longest:
-// ERROR_NO_TOPOLOGICAL_DISC (no hole filling), before the border is written.
-void test_several_boundaries()
-{
-  for(const char* name : {"pig.off", "blade.off"}) {
-    Mesh m = load(name);
-    SMP_CHECK(number_of_boundaries(m) >= 2, name << " is expected to have several boundaries");
-    const halfedge_descriptor bhd = PMP::longest_border(m).first;
-    Maps maps = make_maps(m);
-    Parameterizer p;
-    const SMP::Error_code e = p.parameterize(m, bhd, maps.uv, maps.vi, maps.vp);
-    check_code(name, e, SMP::ERROR_NO_TOPOLOGICAL_DISC, p);
-    check_untouched(name, m, bhd, maps, p, false);
-  }
-}
-
 // A handle: a triangulated torus with one face removed has one border loop but Euler
 // characteristic -1: ERROR_NO_TOPOLOGICAL_DISC. The same removal on a tetrahedron (genus 0)
 // leaves a disk, which runs (circular border, the square needs four border vertices), so the
@@ -899,7 +883,6 @@ int main()
   test_several_components();
   test_single_triangle();
   test_eta();
-  test_several_boundaries();
   test_handle();
   test_error_messages();
   test_reuse();

@@ -218,11 +218,34 @@ void check_options_and_visitor()
   SMP_CHECK(max_distance(m, uvi, uvd) < 1e-7, "iterative and direct differ by " << max_distance(m, uvi, uvd));
 }
 
+// Meshes with several boundaries: the longest is fixed, every other one is closed by a
+// virtual fan inside the linear system (the user's mesh is not modified).
+void check_mesh_with_holes(const std::string& name, std::size_t boundaries)
+{
+  Loaded l = load(name);
+  Mesh& m = l.mesh;
+  const std::size_t nv = num_vertices(m), nf = num_faces(m);
+  UV_map uv = new_uv(m, "v:uv");
+  Default_smp p;
+  check_run(name + " with holes", m, l.bhd, p, uv, SMP::parameterize(m, p, l.bhd, uv));
+  const SMP::Stretch_minimizing_report& r = p.report();
+  SMP_CHECK(r.holes_closed + 1 == boundaries, name << ": closed " << r.holes_closed << " holes");
+  SMP_CHECK(num_vertices(m) == nv && num_faces(m) == nf, name << ": the mesh was modified");
+  SMP_CHECK(r.interior_vertices == nv - r.border_vertices + r.holes_closed, name << ": hole centers are not unknowns");
+  if(!r.history.empty())
+    SMP_CHECK(r.kept().l2_stretch < r.history[0].l2_stretch, name << ": no gain over U^0");
+  std::cout << name << ": " << r.holes_closed << " holes closed, U^0 " << r.history.at(0).l2_stretch
+            << "  U^opt " << r.kept().l2_stretch << " (h = " << r.kept_step << ")" << std::endl;
+}
+
 int main()
 {
   for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
                           "mushroom.off", "mannequin-devil.off"})
     check_disk_mesh(name);
+  for(const auto& [name, boundaries] : {std::pair<const char*, std::size_t>{"head.off", 3}, {"pig.off", 7},
+                                         {"holes.off", 7}, {"mech-holes-shark.off", 4}, {"blade.off", 2}})
+    check_mesh_with_holes(name, boundaries);
   check_mannequin_bar();
   check_options_and_visitor();
   return smp_test::summary();

@@ -261,6 +261,7 @@ private:
     rep.interior_vertices = dc.number_of_rows();
     rep.border_vertices = dc.border.size();
     rep.faces = dc.flat.tri.size();
+    rep.holes_closed = dc.holes;
 
     // CGAL's square border finds its corners through vpmap: entries left true by an earlier
     // call would move them
@@ -269,7 +270,7 @@ private:
     status = m_initializer.get_border_parameterizer().parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != OK)
       return fail(status, "the border parameterizer failed");
-    std::vector<internal::Vec2> uv(dc.vertices.size(), internal::Vec2{0., 0.});
+    std::vector<internal::Vec2> uv(dc.flat.xyz.size(), internal::Vec2{0., 0.}); // with hole centers
     for(int v : dc.border) {
       const Point_2 p = get(uvmap, dc.vertices[v]);
       uv[v] = {CGAL::to_double(p.x()), CGAL::to_double(p.y())};
@@ -285,7 +286,7 @@ private:
 
     internal::Weighted_laplacian_system<Solver_traits> system(dc);
     internal::Flat_stretch stretch;
-    std::vector<double> sigma, factor(dc.vertices.size());
+    std::vector<double> sigma, factor(dc.flat.xyz.size());
     std::vector<internal::Vec2> best_uv;
     for(std::size_t h = 0;; ++h) {
       if(!system.solve(w, uv, m_solver_traits))
@@ -345,18 +346,32 @@ private:
     return OK;
   }
 
-  // w^0 from the initializer, in the ring order of `dc`
+  // w^0 from the initializer, in the ring order of `dc`; around a closed hole, where the
+  // initializer cannot see the virtual faces, shape-preserving weights of the flat ring
   bool initial_weights(const Triangle_mesh& mesh, const internal::Disk_component<Triangle_mesh>& dc,
                        std::vector<double>& w)
   {
     w.resize(dc.ring.size());
+    internal::Shape_preserving_ring_weights floater;
+    std::vector<internal::Vec3> ring;
+    std::vector<double> ring_w;
     for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
+      const int first = dc.ring_begin[r], last = dc.ring_begin[r + 1];
+      if(dc.flat_ring[r]) {
+        ring.clear();
+        for(int e = first; e < last; ++e)
+          ring.push_back(dc.flat.xyz[dc.ring[e]]);
+        if(!floater.compute(dc.flat.xyz[dc.interior[r]], ring, ring_w))
+          return false;
+        std::copy(ring_w.begin(), ring_w.end(), w.begin() + first);
+        continue;
+      }
       const vertex_descriptor v = dc.vertices[dc.interior[r]];
-      int e = dc.ring_begin[r];
+      int e = first;
       double sum = 0.;
       Vertex_around_target_circulator<Triangle_mesh> vj(halfedge(v, mesh), mesh), end = vj;
       CGAL_For_all(vj, end) {
-        if(e == dc.ring_begin[r + 1])
+        if(e == last)
           return false;
         const double wij = CGAL::to_double(m_initializer.compute_w_ij(mesh, v, vj));
         if(!(wij >= 0.) || !std::isfinite(wij))
@@ -364,7 +379,7 @@ private:
         w[e++] = wij;
         sum += wij;
       }
-      if(e != dc.ring_begin[r + 1] || !(sum > 0.))
+      if(e != last || !(sum > 0.))
         return false;
     }
     return true;

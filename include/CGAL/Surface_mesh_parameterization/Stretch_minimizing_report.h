@@ -51,6 +51,7 @@ struct Stretch_minimizing_report
   std::size_t interior_vertices = 0;                ///< unknowns of the linear system
   std::size_t border_vertices = 0;                  ///< vertices fixed by the border parameterizer
   std::size_t faces = 0;                            ///< faces of the parameterized component
+  std::size_t holes_closed = 0;                     ///< inner boundaries closed virtually
 
   /// Number of reweighting steps computed (the size of the history less U^0).
   std::size_t steps_taken() const { return history.empty() ? 0 : history.size() - 1; }
