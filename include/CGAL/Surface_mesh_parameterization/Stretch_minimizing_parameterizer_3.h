@@ -42,9 +42,16 @@ namespace Surface_mesh_parameterization {
 /// computes the L2 stretch \f$ \sigma_j \f$ of every vertex (Sander et al. 2001, area-weighted
 /// over the faces around it), divides the weights by \f$ \sigma_j^{\eta} \f$ and solves again:
 /// \f$ w^{h+1}_{ij} = w^h_{ij} / \sigma_j(U^h)^{\eta} \f$. Vertices move towards the stretched
-/// regions. The iteration stops when the normalized L2 stretch of the mesh stops decreasing,
+/// regions. The iteration stops when the normalized L2 stretch of the mesh stops decreasing
+/// (a decrease below a relative \f$ 10^{-10} \f$, at the level of rounding, counts as none),
 /// and the best parameterization \f$ U^{opt} \f$ is written; one step gives \f$ U^1 \f$.
 /// The weights stay positive, so with a convex border no face flips at any step.
+///
+/// A mesh with several boundaries (a sphere with holes, an annulus) is handled as in the
+/// paper's section 4: the border of `bhd` is fixed, and every other boundary is closed by a
+/// virtual fan around its centroid that exists only in the linear system, so that its vertices
+/// are interior vertices with positive weights (shape-preserving weights over the closed ring,
+/// whatever the initializer) and the no-flip guarantee still holds. The mesh is not modified.
 ///
 /// Faces of zero area in 3D or in the plane (e.g. a border ear whose three vertices land on
 /// one side of the square) are left out of the vertex stretch and of the stopping measure,
@@ -180,6 +187,7 @@ public:
   /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `bool` as value
   ///
   /// \param mesh the triangle mesh; only the component of `bhd` is read, and the mesh is not modified
+  ///        (a temporary vertex property may be added and removed)
   /// \param bhd a halfedge on the border of that component
   /// \param uvmap receives the parameterization of the vertices of that component (on success)
   /// \param vimap vertex index map
@@ -191,7 +199,7 @@ public:
   /// - `ERROR_WRONG_PARAMETER`: `eta` outside \f$ (0, 1] \f$, `bhd` not a border halfedge, or
   ///   a non-finite vertex coordinate;
   /// - `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`, `ERROR_NO_TOPOLOGICAL_DISC` (no border,
-  ///   several boundaries, handles);
+  ///   handles, a boundary that touches itself or another one at a vertex);
   /// - the error of the border parameterizer (e.g. `ERROR_BORDER_TOO_SHORT`);
   /// - `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`: initial weights not finite and positive (zero-length
   ///   edges), or the solver failed;
