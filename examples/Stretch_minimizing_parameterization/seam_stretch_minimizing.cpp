@@ -1,6 +1,6 @@
-// A closed mesh (genus 0) cut open by a seam, then parameterized: the seam is the shortest
-// edge path from a vertex to the vertex farthest from it, and a CGAL::Seam_mesh presents the
-// cut mesh as a disk without modifying it.
+// A closed mesh (genus 0) cut open by a seam, then parameterized: make_disk_seam() marks the
+// shortest edge path between two vertices far apart, and a CGAL::Seam_mesh presents the cut
+// mesh as a disk without modifying it. A seam of your own goes in with Seam_mesh::add_seams().
 //   seam_stretch_minimizing [closed_mesh.off] [out.off]
 
 #include <CGAL/Simple_cartesian.h>
@@ -10,15 +10,13 @@
 #include <CGAL/Surface_mesh_parameterization/IO/File_off.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
+#include <CGAL/Surface_mesh_parameterization/make_disk_seam.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <cstdlib>
 #include <fstream>
-#include <functional>
 #include <iostream>
-#include <limits>
-#include <queue>
-#include <vector>
+#include <string>
 
 typedef CGAL::Simple_cartesian<double>                        Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3>                   Surface_mesh;
@@ -31,40 +29,6 @@ typedef CGAL::Seam_mesh<Surface_mesh, Seam_edge_map, Seam_vertex_map> Mesh;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
-// The shortest edge path (Dijkstra on edge lengths) from `source` to the vertex farthest from it.
-std::vector<SM_vertex> longest_shortest_path(const Surface_mesh& sm, SM_vertex source)
-{
-  std::vector<double> dist(sm.number_of_vertices(), std::numeric_limits<double>::infinity());
-  std::vector<SM_vertex> previous(sm.number_of_vertices());
-  typedef std::pair<double, SM_vertex> Entry;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-  dist[source] = 0.;
-  queue.emplace(0., source);
-  while(!queue.empty()) {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if(d > dist[v])
-      continue;
-    for(SM_halfedge h : halfedges_around_source(v, sm)) {
-      const SM_vertex w = target(h, sm);
-      const double dw = d + std::sqrt(CGAL::squared_distance(sm.point(v), sm.point(w)));
-      if(dw < dist[w]) {
-        dist[w] = dw;
-        previous[w] = v;
-        queue.emplace(dw, w);
-      }
-    }
-  }
-  SM_vertex far = source;
-  for(SM_vertex v : vertices(sm))
-    if(dist[v] > dist[far] && dist[v] < std::numeric_limits<double>::infinity())
-      far = v;
-  std::vector<SM_vertex> path{far};
-  while(path.back() != source)
-    path.push_back(previous[path.back()]);
-  return path;
-}
-
 int main(int argc, char** argv)
 {
   const char* in = argc > 1 ? argv[1] : "data/bear.off";
@@ -75,18 +39,21 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // mark the seam, then view the mesh cut along it
+  // view the mesh cut along a seam
   Seam_edge_map seam_edges = sm.add_property_map<SM_edge, bool>("e:on_seam", false).first;
   Seam_vertex_map seam_vertices = sm.add_property_map<SM_vertex, bool>("v:on_seam", false).first;
   Mesh mesh(sm, seam_edges, seam_vertices);
-  const std::vector<SM_vertex> path = longest_shortest_path(sm, *vertices(sm).begin());
-  for(std::size_t i = 0; i + 1 < path.size(); ++i)
-    mesh.add_seam(path[i], path[i + 1]);
-  std::cout << "seam of " << path.size() - 1 << " edges" << std::endl;
+  boost::graph_traits<Mesh>::halfedge_descriptor bhd; // on the border made by the seam
+  std::string why;
+  const SMP::Error_code cut = SMP::make_disk_seam(mesh, bhd, &why);
+  if(cut != SMP::OK) {
+    std::cerr << "Error: " << SMP::error_message(cut) << ": " << why << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "seam of " << mesh.number_of_seam_edges() << " edges" << std::endl;
 
-  // a halfedge on the border created by the seam; the uv map is stored per halfedge of the
-  // underlying mesh, so that a vertex on the seam has one uv position on each side
-  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+  // the uv map is stored per halfedge of the underlying mesh, so that a vertex on the seam
+  // has one uv position on each side
   auto uvmap = sm.add_property_map<SM_halfedge, Kernel::Point_2>("h:uv").first;
 
   SMP::Stretch_minimizing_parameterizer_3<Mesh> parameterizer;

@@ -18,6 +18,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
+#include <CGAL/Surface_mesh_parameterization/make_disk_seam.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
 
@@ -261,11 +262,86 @@ void test_seam_mesh()
   SMP_CHECK(p.report().faces == num_faces(sm), "Seam_mesh: " << p.report().faces << " faces of " << num_faces(sm));
 }
 
+// make_disk_seam(): a closed genus-0 mesh is cut by one path into a disk and parameterized
+// without degenerate faces; what it cannot cut gets an error and no seam.
+void test_make_disk_seam()
+{
+  for(const char* name : {"bear.off", "bunny00.off"}) {
+    SMesh sm;
+    SMP_CHECK(CGAL::IO::read_polygon_mesh(smp_test::data_file(name), sm) && CGAL::is_closed(sm), "cannot read " << name);
+    Seam_edge_pmap seam_edges = sm.add_property_map<SM_edge_descriptor, bool>("e:on_seam", false).first;
+    Seam_vertex_pmap seam_vertices = sm.add_property_map<SM_vertex_descriptor, bool>("v:on_seam", false).first;
+    Seam_mesh mesh(sm, seam_edges, seam_vertices);
+    boost::graph_traits<Seam_mesh>::halfedge_descriptor bhd;
+    std::string why;
+    const SMP::Error_code cut = SMP::make_disk_seam(mesh, bhd, &why);
+    SMP_CHECK(cut == SMP::OK, name << ": make_disk_seam: " << why);
+    if(cut != SMP::OK)
+      continue;
+    std::size_t border_length = 0;
+    for(auto h : halfedges_around_face(bhd, mesh)) { (void)h; ++border_length; }
+    SMP_CHECK(is_border(bhd, mesh) && border_length == 2 * mesh.number_of_seam_edges() && border_length >= 4,
+              name << ": border of " << border_length << " edges for " << mesh.number_of_seam_edges() << " seam edges");
+
+    SMesh::Property_map<SM_halfedge_descriptor, Point_2> uvmap =
+      sm.add_property_map<SM_halfedge_descriptor, Point_2>("h:uv", Point_2(-7., -7.)).first;
+    SMP::Stretch_minimizing_parameterizer_3<Seam_mesh> p;
+    check_run(std::string(name) + " cut by make_disk_seam", mesh, bhd, p, uvmap, SMP::parameterize(mesh, p, bhd, uvmap));
+    SMP_CHECK(p.report().status == SMP::OK && p.report().kept().degenerate_uv_faces == 0 && p.report().degenerate_3d_faces == 0,
+              name << ": degenerate faces after the cut");
+  }
+
+  // what one path cannot cut into a disk: a border, a handle, two components, nothing
+  auto expect_error = [](SMesh& sm, const char* what) {
+    Seam_edge_pmap se = sm.add_property_map<SM_edge_descriptor, bool>("e:on_seam", false).first;
+    Seam_vertex_pmap sv = sm.add_property_map<SM_vertex_descriptor, bool>("v:on_seam", false).first;
+    Seam_mesh mesh(sm, se, sv);
+    boost::graph_traits<Seam_mesh>::halfedge_descriptor bhd;
+    std::string why;
+    const SMP::Error_code e = SMP::make_disk_seam(mesh, bhd, &why);
+    SMP_CHECK(e != SMP::OK && !why.empty() && mesh.number_of_seam_edges() == 0,
+              what << ": got " << SMP::error_message(e) << " (" << why << "), " << mesh.number_of_seam_edges() << " seam edges");
+    return e;
+  };
+  SMesh with_border;
+  CGAL::IO::read_polygon_mesh(smp_test::data_file("nefertiti.off"), with_border);
+  SMP_CHECK(expect_error(with_border, "open mesh") == SMP::ERROR_NO_TOPOLOGICAL_BALL, "open mesh: wrong code");
+
+  SMesh torus; // 8 x 6 quads split in triangles, genus 1
+  std::vector<SM_vertex_descriptor> tv;
+  const int n = 8, m = 6;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      const double a = 2 * 3.14159265358979 * i / n, b = 2 * 3.14159265358979 * j / m;
+      tv.push_back(torus.add_vertex(Point_3((3 + std::cos(b)) * std::cos(a), (3 + std::cos(b)) * std::sin(a), std::sin(b))));
+    }
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      auto V = [&](int x, int y) { return tv[((x + n) % n) * m + (y + m) % m]; };
+      torus.add_face(V(i, j), V(i + 1, j), V(i + 1, j + 1));
+      torus.add_face(V(i, j), V(i + 1, j + 1), V(i, j + 1));
+    }
+  SMP_CHECK(CGAL::is_closed(torus) && faces(torus).size() == std::size_t(2 * n * m), "torus construction");
+  SMP_CHECK(expect_error(torus, "torus") == SMP::ERROR_NO_TOPOLOGICAL_BALL, "torus: wrong code");
+
+  SMesh two;
+  CGAL::IO::read_polygon_mesh(smp_test::data_file("bear.off"), two);
+  SMesh copy = two;
+  for(SM_vertex_descriptor v : vertices(copy))
+    copy.point(v) = copy.point(v) + Kernel::Vector_3(100, 0, 0);
+  two.join(copy);
+  SMP_CHECK(expect_error(two, "two spheres") == SMP::ERROR_NO_TOPOLOGICAL_BALL, "two spheres: wrong code");
+
+  SMesh empty;
+  SMP_CHECK(expect_error(empty, "empty") == SMP::ERROR_EMPTY_MESH, "empty: wrong code");
+}
+
 } // namespace
 
 int main()
 {
   test_surface_mesh_and_polyhedron();
   test_seam_mesh();
+  test_make_disk_seam();
   return smp_test::summary();
 }
