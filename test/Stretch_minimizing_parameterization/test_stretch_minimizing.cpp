@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_ear_aware_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
@@ -235,14 +236,80 @@ void check_mesh_with_holes(const std::string& name, std::size_t boundaries)
   if(!r.history.empty())
     SMP_CHECK(r.kept().l2_stretch < r.history[0].l2_stretch, name << ": no gain over U^0");
   std::cout << name << ": " << r.holes_closed << " holes closed, U^0 " << r.history.at(0).l2_stretch
-            << "  U^opt " << r.kept().l2_stretch << " (h = " << r.kept_step << ")" << std::endl;
+            << "  U^opt " << r.kept().l2_stretch << " (h = " << r.kept_step << "), degenerate uv faces "
+            << r.kept().degenerate_uv_faces << std::endl;
+
+  // with corners that avoid flattened faces, only those four corners cannot save are left
+  // (mech-holes-shark's outer border runs along a strip one face wide), and the border says so
+  typedef SMP::Square_border_ear_aware_parameterizer_3<Mesh> Ear_aware;
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, Ear_aware> Floater_ear_aware;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater_ear_aware> ear_aware;
+  check_run(name + " with holes, ear-aware border", m, l.bhd, ear_aware, uv, SMP::parameterize(m, ear_aware, l.bhd, uv));
+  Ear_aware border;
+  UV_map uvb = new_uv(m, "v:uvb");
+  border.parameterize(m, l.bhd, uvb, get(CGAL::vertex_index, m),
+                      m.add_property_map<vertex_descriptor, bool>("v:border_done", false).first);
+  if(ear_aware.report().status == SMP::OK)
+    SMP_CHECK(ear_aware.report().kept().degenerate_uv_faces == border.number_of_flattened_faces()
+                && border.number_of_flattened_faces() <= r.kept().degenerate_uv_faces,
+              name << ": " << ear_aware.report().kept().degenerate_uv_faces << " degenerate faces, the border reports "
+                   << border.number_of_flattened_faces() << ", CGAL's square gives " << r.kept().degenerate_uv_faces);
+
+  // on a circle no three border vertices are collinear: no degenerate face at all
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, SMP::Circular_border_arc_length_parameterizer_3<Mesh> > Floater_circle;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater_circle> circle;
+  UV_map uvc = new_uv(m, "v:uvc");
+  const SMP::Error_code status = SMP::parameterize(m, circle, l.bhd, uvc);
+  SMP_CHECK(status == SMP::OK && circle.report().kept().degenerate_uv_faces == 0 && circle.report().degenerate_3d_faces == 0
+              && circle.report().kept().flipped_faces == 0,
+            name << ": circular border: " << circle.report().message << " degenerate "
+                 << (circle.report().history.empty() ? 0 : circle.report().kept().degenerate_uv_faces));
+  if(status == SMP::OK) { // (on holes.off the circle's U^0 is already its best: the rule stops there)
+    std::cout << name << ": ear-aware square U^opt " << ear_aware.report().kept().l2_stretch << " ("
+              << ear_aware.report().kept().degenerate_uv_faces << " flattened), circle U^opt "
+              << circle.report().kept().l2_stretch << std::endl;
+  }
+}
+
+// The ear-aware square border puts corners where a face would otherwise have its three
+// vertices on one side: no degenerate face on the bundled disk meshes, and the stretch
+// minimizer runs on it as on CGAL's square.
+void check_ear_aware_border(const std::string& name)
+{
+  typedef SMP::Square_border_ear_aware_parameterizer_3<Mesh> Border;
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, Border> Floater;
+  Loaded l = load(name);
+  UV_map uv = new_uv(l.mesh, "v:uv");
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p;
+  check_run(name + " ear-aware border", l.mesh, l.bhd, p, uv, SMP::parameterize(l.mesh, p, l.bhd, uv));
+  SMP_CHECK(p.report().status == SMP::OK && p.report().kept().degenerate_uv_faces == 0,
+            name << ": " << p.report().kept().degenerate_uv_faces << " degenerate faces with the ear-aware border");
+
+  // the border alone: what it reports as flattened is what the map has
+  Border border;
+  UV_map uvb = new_uv(l.mesh, "v:uvb");
+  auto vp = l.mesh.add_property_map<vertex_descriptor, bool>("v:border_done", false).first;
+  SMP_CHECK(border.parameterize(l.mesh, l.bhd, uvb, get(CGAL::vertex_index, l.mesh), vp) == SMP::OK, name << ": border failed");
+  SMP_CHECK(border.number_of_flattened_faces() == 0, name << ": " << border.number_of_flattened_faces() << " flattened faces");
+  std::size_t corners = 0;
+  for(halfedge_descriptor h : halfedges_around_face(l.bhd, l.mesh)) {
+    const Point_2 q = uvb[target(h, l.mesh)];
+    SMP_CHECK(q.x() == 0. || q.x() == 1. || q.y() == 0. || q.y() == 1., name << ": border vertex off the square");
+    if((q.x() == 0. || q.x() == 1.) && (q.y() == 0. || q.y() == 1.))
+      ++corners;
+  }
+  SMP_CHECK(corners == 4, name << ": " << corners << " corners");
+  std::cout << name << ": ear-aware border, U^opt " << p.report().kept().l2_stretch << " (h = "
+            << p.report().kept_step << ")" << std::endl;
 }
 
 int main()
 {
   for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
-                          "mushroom.off", "mannequin-devil.off"})
+                          "mushroom.off", "mannequin-devil.off"}) {
     check_disk_mesh(name);
+    check_ear_aware_border(name);
+  }
   for(const auto& [name, boundaries] : {std::pair<const char*, std::size_t>{"head.off", 3}, {"pig.off", 7},
                                          {"holes.off", 7}, {"mech-holes-shark.off", 4}, {"blade.off", 2}})
     check_mesh_with_holes(name, boundaries);

@@ -1,0 +1,51 @@
+# Plots of the benchmark results (gnuplot 5).
+#   gnuplot -e "dir='benchmark/results'" benchmark/Stretch_minimizing_parameterization/plots.gp
+# Reads the plot_*.dat files that benchmark_parameterizers --out DIR writes (one block per
+# line, the first row of a block is its title) and writes PNG files next to them.
+
+if (!exists("dir")) dir = "."
+
+set terminal pngcairo size 1400,850 noenhanced font "sans,11"
+set grid
+set key outside right top Left reverse width -6
+set style data linespoints
+set pointsize 1.2
+
+# Time against the number of vertices, log-log, one line per method
+file = dir."/plot_time.dat"
+stats file using 1 nooutput
+set output dir."/time_vs_vertices.png"
+set title "Wall time of one parameterization call (median) against mesh size"
+set xlabel "vertices"
+set ylabel "seconds"
+set logscale xy
+set format y "%g"
+set format x "%g"
+plot for [i=0:STATS_blocks-1] file index i using 1:2 title columnheader(1) lw 2
+unset output
+
+# Peak memory against the number of vertices
+file = dir."/plot_memory.dat"
+stats file using 1 nooutput
+set output dir."/memory_vs_vertices.png"
+set title "Peak resident memory of the process running one call (mesh included)"
+set ylabel "MiB"
+plot for [i=0:STATS_blocks-1] file index i using 1:2 title columnheader(1) lw 2
+unset output
+
+# L2 stretch against the step h of the stretch minimization, one line per mesh
+set xlabel "step h"
+set ylabel "normalized L2 stretch of U^h"
+unset logscale x
+set logscale y
+set xtics 1
+set format y "%.2f"
+do for [id in "f_uopt uopt_eta05"] {
+  file = dir."/plot_history_".id.".dat"
+  stats file using 1 nooutput
+  eta = (id eq "f_uopt") ? "1" : "0.5"
+  set output dir."/stretch_vs_step_".id.".png"
+  set title "Stretch minimization, eta = ".eta.": L2 stretch of U^h (the last step, where the stretch stops decreasing, is not kept)"
+  plot for [i=0:STATS_blocks-1] file index i using 1:2 title columnheader(1) lw 2
+  unset output
+}
