@@ -292,11 +292,40 @@ void check_mesh_statistics()
   SMP_CHECK(s.area_distortion < 1e-12, "uniform area scaling has no area distortion");
 }
 
+// A border that folds over itself (the top side pushed below the bottom one): the weights are
+// positive but the border is not convex, and U^0 flips faces. The stretch minimizer must say
+// so (ERROR_NO_1_TO_1_MAPPING) and write no interior vertex.
+void check_folded_border(std::mt19937& rng)
+{
+  Mesh m = planar_grid(rng, 6);
+  UV_map target = m.add_property_map<vertex_descriptor, Point_2>("v:target").first;
+  for(vertex_descriptor v : vertices(m)) {
+    const Point_3& p = m.point(v);
+    target[v] = Point_2(p.x(), p.y() > 5.5 ? -3. : p.y());
+  }
+  const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, Given_border_parameterizer_3> Floater;
+  const Floater floater(Given_border_parameterizer_3{target});
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(floater);
+  UV_map uv = m.add_property_map<vertex_descriptor, Point_2>("v:uv_folded", Point_2(-7, -7)).first;
+  SMP_CHECK(SMP::parameterize(m, p, bhd, uv) == SMP::ERROR_NO_1_TO_1_MAPPING,
+            "folded border: " << SMP::error_message(p.report().status) << " " << p.report().message);
+  SMP_CHECK(p.report().history.size() == 1 && p.report().history[0].flipped_faces > 0
+              && p.report().stop == SMP::Stretch_minimizing_stop::FLIPPED_FACES,
+            "folded border: U^0 should be computed, flipped, and end the iteration");
+  std::size_t written = 0;
+  for(vertex_descriptor v : vertices(m))
+    if(!CGAL::is_border(v, m) && uv[v] != Point_2(-7, -7))
+      ++written;
+  SMP_CHECK(written == 0, "folded border: " << written << " interior vertices written");
+}
+
 int main()
 {
   std::mt19937 rng(20261122);
   check_ring_weights(rng);
   check_linear_precision(rng);
+  check_folded_border(rng);
   check_face_stretch();
   check_mesh_statistics();
   return smp_test::summary();

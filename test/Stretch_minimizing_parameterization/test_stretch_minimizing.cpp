@@ -12,6 +12,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Natural_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_ear_aware_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
@@ -303,6 +304,51 @@ void check_ear_aware_border(const std::string& name)
             << p.report().kept_step << ")" << std::endl;
 }
 
+// The natural border (the border of CGAL's LSCM map, fixed): not convex, so every step is
+// checked for flips. Where LSCM folds its border over itself, the option says so.
+void check_natural_border()
+{
+  typedef SMP::Natural_border_parameterizer_3<Mesh> Natural;
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, Natural> Floater;
+  auto run = [](const std::string& name, double bar) {
+    Loaded l = load(name);
+    UV_map uv = new_uv(l.mesh, "v:uv");
+    SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p;
+    const SMP::Error_code status = SMP::parameterize(l.mesh, p, l.bhd, uv);
+    SMP_CHECK(status == SMP::OK, name << " natural border: " << p.report().message);
+    if(status != SMP::OK)
+      return;
+    for(const auto& s : p.report().history)
+      SMP_CHECK(s.flipped_faces == 0 || p.report().stop == SMP::Stretch_minimizing_stop::FLIPPED_FACES,
+                name << " natural border: flips at U^" << s.step << " without a stop");
+    const SMP::Stretch_statistics st = SMP::compute_stretch_statistics(l.mesh, uv);
+    SMP_CHECK(st.flipped_faces == 0, name << " natural border: " << st.flipped_faces << " flipped faces returned");
+    SMP_CHECK(std::abs(st.l2_stretch - p.report().kept().l2_stretch) < 1e-9 * st.l2_stretch, name << ": report and map differ");
+    SMP_CHECK(st.l2_stretch <= bar, name << " natural border: U^opt " << st.l2_stretch << " above " << bar);
+    std::cout << name << ": natural border U^opt " << st.l2_stretch << " (h = " << p.report().kept_step << ")" << std::endl;
+  };
+  run("mesh_with_border.off", 1.05);
+  run("mushroom.off", 1.27588 - 0.01); // below the square border's U^opt (1.2759)
+  run("mannequin-devil.off", 1.6);     // LSCM flips ~4000 faces inside, but its border is simple
+
+  // three_peaks: LSCM folds the border over itself: an error, and no interior written
+  Loaded l = load("three_peaks.off");
+  UV_map uv = new_uv(l.mesh, "v:uv");
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p;
+  SMP_CHECK(SMP::parameterize(l.mesh, p, l.bhd, uv) == SMP::ERROR_NO_1_TO_1_MAPPING && !p.report().message.empty(),
+            "three_peaks natural border: " << p.report().message);
+  Natural natural;
+  natural.parameterize(l.mesh, l.bhd, uv, get(CGAL::vertex_index, l.mesh),
+                       l.mesh.add_property_map<vertex_descriptor, bool>("v:done", false).first);
+  SMP_CHECK(!natural.why().empty() && natural.number_of_free_border_flipped_faces() > 0,
+            "three_peaks: the natural border does not say why");
+  std::size_t written = 0;
+  for(vertex_descriptor v : vertices(l.mesh))
+    if(!CGAL::is_border(v, l.mesh) && uv[v] != Point_2(-7, -7))
+      ++written;
+  SMP_CHECK(written == 0, "three_peaks: " << written << " interior vertices written after an error");
+}
+
 int main()
 {
   for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
@@ -313,6 +359,7 @@ int main()
   for(const auto& [name, boundaries] : {std::pair<const char*, std::size_t>{"head.off", 3}, {"pig.off", 7},
                                          {"holes.off", 7}, {"mech-holes-shark.off", 4}, {"blade.off", 2}})
     check_mesh_with_holes(name, boundaries);
+  check_natural_border();
   check_mannequin_bar();
   check_options_and_visitor();
   return smp_test::summary();

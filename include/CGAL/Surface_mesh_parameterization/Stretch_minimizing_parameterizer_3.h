@@ -277,7 +277,7 @@ private:
       put(vpmap, v, false);
     status = m_initializer.get_border_parameterizer().parameterize(mesh, bhd, uvmap, vimap, vpmap);
     if(status != OK)
-      return fail(status, "the border parameterizer failed");
+      return fail(status, std::string("the border parameterizer failed: ") + error_message(status));
     std::vector<internal::Vec2> uv(dc.flat.xyz.size(), internal::Vec2{0., 0.}); // with hole centers
     for(int v : dc.border) {
       const Point_2 p = get(uvmap, dc.vertices[v]);
