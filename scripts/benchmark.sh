@@ -8,7 +8,7 @@
 # and history.csv (all figures), machine.md, run.log and the PNG plots.
 #
 # Environment (all optional):
-#   SMP_BENCH_BUDGET=180       skip a method on a mesh when its predicted time exceeds this (s)
+#   SMP_BENCH_BUDGET=300       skip a method on a mesh when its predicted time exceeds this (s)
 #   SMP_BENCH_HARD_LIMIT=900   kill a run that takes longer than this (s)
 #   SMP_BENCH_MAX_LOOP=3       refine mannequin-devil up to this many times (0-3)
 #   SMP_BENCH_METHODS=a,b      only these methods (ids: benchmark_parameterizers --list)
@@ -20,7 +20,7 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 build="${SMP_BENCH_BUILD_DIR:-build/bench}"
 results="${SMP_BENCH_RESULTS:-benchmark/results}"
-budget="${SMP_BENCH_BUDGET:-180}"
+budget="${SMP_BENCH_BUDGET:-300}"
 hard_limit="${SMP_BENCH_HARD_LIMIT:-900}"
 max_loop="${SMP_BENCH_MAX_LOOP:-3}"
 data="examples/Stretch_minimizing_parameterization/data"
@@ -62,7 +62,7 @@ compiler="$(cache_value CMAKE_CXX_COMPILER)"
   echo "- kernel: $(uname -sr)"
   echo "- compiler: $compiler, $("$compiler" --version | head -n 1)"
   echo "- build type: $(cache_value CMAKE_BUILD_TYPE), flags: $(cache_value CMAKE_CXX_FLAGS_RELEASE)"
-  echo "- CGAL: $(sed -n 's/^#define CGAL_VERSION_STR *"\(.*\)"/\1/p' /usr/include/CGAL/version.h)" \
+  echo "- CGAL: $(sed -n "s/^#define CGAL_VERSION  *//p" /usr/include/CGAL/version.h)" \
        "(Debian libcgal-dev $(dpkg-query -W -f='${Version}' libcgal-dev 2>/dev/null || echo '?'))"
   echo "- Eigen: $(awk '/#define EIGEN_(WORLD|MAJOR|MINOR)_VERSION/ {v = v (v ? "." : "") $3} END {print v}' \
        /usr/include/eigen3/Eigen/src/Core/util/Macros.h)" \

@@ -19,6 +19,9 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
 #include <CGAL/Surface_mesh_parameterization/make_disk_seam.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize_components.h>
+#include <CGAL/boost/graph/Face_filtered_graph.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
 
@@ -336,6 +339,71 @@ void test_make_disk_seam()
   SMP_CHECK(expect_error(empty, "empty") == SMP::ERROR_EMPTY_MESH, "empty: wrong code");
 }
 
+// parameterize_components(): every component with a border becomes a chart of its own, the
+// charts do not overlap and fit the unit square, each is the map the parameterizer gives for
+// it alone (same stretch: the measure ignores scale and translation), and a closed component
+// is reported and left alone.
+void test_components()
+{
+  SMesh mesh, part;
+  SMP_CHECK(CGAL::IO::read_polygon_mesh(smp_test::data_file("nefertiti.off"), mesh), "nefertiti");
+  for(const char* name : {"mushroom.off", "head.off", "bear.off"}) {
+    part.clear();
+    SMP_CHECK(CGAL::IO::read_polygon_mesh(smp_test::data_file(name), part), name);
+    for(SM_vertex_descriptor v : vertices(part))
+      part.point(v) = part.point(v) + Kernel::Vector_3(1000, 0, 0); // far apart, not that it matters
+    mesh.join(part);
+  }
+  auto uv = mesh.add_property_map<SM_vertex_descriptor, Point_2>("v:uv", Point_2(-7, -7)).first;
+  std::vector<SMP::Chart> charts;
+  SMP::Stretch_minimizing_parameterizer_3<SMesh> p;
+  const SMP::Error_code e = SMP::parameterize_components(mesh, p, uv, &charts);
+  SMP_CHECK(e == SMP::ERROR_NO_TOPOLOGICAL_DISC, "components: the closed bear should be reported, got " << SMP::error_message(e));
+  SMP_CHECK(charts.size() == 4, "components: " << charts.size() << " charts");
+
+  auto component = mesh.add_property_map<SMesh::Face_index, std::size_t>("f:cc").first;
+  PMP::connected_components(mesh, component);
+  std::size_t closed = 0;
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    std::vector<SMesh::Face_index> cc;
+    for(auto f : faces(mesh))
+      if(component[f] == c) cc.push_back(f);
+    SMP_CHECK(cc.size() == charts[c].faces, "chart " << c << ": face count");
+    if(charts[c].status != SMP::OK) {
+      ++closed;
+      for(auto f : cc)
+        for(auto v : vertices_around_face(halfedge(f, mesh), mesh))
+          SMP_CHECK(uv[v] == Point_2(-7, -7), "the closed component was written");
+      continue;
+    }
+    const SMP::Stretch_statistics s = SMP::compute_stretch_statistics(cc, mesh, uv);
+    SMP_CHECK(s.flipped_faces == 0, "chart " << c << ": flipped faces");
+    // the same component alone
+    SMesh alone;
+    CGAL::Face_filtered_graph<SMesh> filtered(mesh, cc);
+    CGAL::copy_face_graph(filtered, alone);
+    auto uva = alone.add_property_map<SM_vertex_descriptor, Point_2>("v:uv").first;
+    SMP::Stretch_minimizing_parameterizer_3<SMesh> q;
+    SMP_CHECK(SMP::parameterize(alone, q, PMP::longest_border(alone).first, uva) == SMP::OK, "chart " << c << " alone");
+    SMP_CHECK(std::abs(q.report().kept().l2_stretch - s.l2_stretch) < 1e-8 * s.l2_stretch,
+              "chart " << c << ": L2 " << s.l2_stretch << " in the atlas, " << q.report().kept().l2_stretch << " alone");
+    for(auto f : cc)
+      for(auto v : vertices_around_face(halfedge(f, mesh), mesh)) {
+        const Point_2 t = uv[v];
+        SMP_CHECK(t.x() >= charts[c].x - 1e-12 && t.x() <= charts[c].x + charts[c].width + 1e-12 &&
+                  t.y() >= charts[c].y - 1e-12 && t.y() <= charts[c].y + charts[c].height + 1e-12 &&
+                  t.x() >= 0. && t.y() >= 0. && t.x() <= 1. + 1e-12 && t.y() <= 1. + 1e-12,
+                  "chart " << c << ": a vertex outside its box or the unit square");
+      }
+    for(std::size_t d = 0; d < c; ++d)
+      if(charts[d].status == SMP::OK)
+        SMP_CHECK(charts[c].x + charts[c].width <= charts[d].x || charts[d].x + charts[d].width <= charts[c].x ||
+                  charts[c].y + charts[c].height <= charts[d].y || charts[d].y + charts[d].height <= charts[c].y,
+                  "charts " << c << " and " << d << " overlap");
+  }
+  SMP_CHECK(closed == 1, "components: " << closed << " charts failed, expected the bear only");
+}
+
 } // namespace
 
 int main()
@@ -343,5 +411,6 @@ int main()
   test_surface_mesh_and_polyhedron();
   test_seam_mesh();
   test_make_disk_seam();
+  test_components();
   return smp_test::summary();
 }
