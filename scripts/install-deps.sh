@@ -3,7 +3,8 @@
 # Idempotent: does nothing (and prints nothing) when everything is present.
 set -euo pipefail
 
-packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev)
+packages=(g++ cmake make pkg-config libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
+          libcairo2-dev libosmesa6-dev)
 
 missing=()
 for p in "${packages[@]}"; do

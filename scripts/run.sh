@@ -1,15 +1,15 @@
 #!/usr/bin/env bash
-# Build the main example and parameterize the mannequin head; writes
-# mannequin_uv.obj at the repo root.
+# Installs what is missing, builds the command-line tool and parameterizes the bundled mannequin
+# head: prints the stretch of every step and writes the OBJ (+ MTL, checkerboard), the JSON
+# report and the pictures into mannequin-devil_uv/.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/install-deps.sh
 
-cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DSMP_BUILD_EXAMPLES=ON
-cmake --build build/release -j2 --target stretch_minimizing_parameterization
+cmake -S . -B build/release -DCMAKE_BUILD_TYPE=Release -DSMP_BUILD_TOOLS=ON > /dev/null
+cmake --build build/release -j2 --target smp-parameterize
 
-build/release/examples/Stretch_minimizing_parameterization/stretch_minimizing_parameterization \
-  examples/Stretch_minimizing_parameterization/data/mannequin-devil.off mannequin_uv.obj
-
-echo "UV-mapped mesh written to $(pwd)/mannequin_uv.obj"
+build/release/tools/smp-parameterize examples/Stretch_minimizing_parameterization/data/mannequin-devil.off \
+  -o mannequin-devil_uv
+echo "Pictures: $(pwd)/mannequin-devil_uv/*.png (checkerboard and stretch views, uv layout)"

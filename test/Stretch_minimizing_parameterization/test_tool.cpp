@@ -1,0 +1,207 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smp-parameterize as a user meets it: on a small mesh, the OBJ reread with CGAL is the
+// library's result, the JSON report parses and agrees, the pictures have the asked size and
+// are not blank; each error a user will hit gives one line and a non-zero exit.
+
+#include "smp_test_util.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+
+#include <cairo.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double>      Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace fs = std::filesystem;
+
+struct Result
+{
+  int status = -1;
+  std::string out, err;
+};
+
+// Runs the tool with `args`, capturing its output.
+Result run(const std::string& args)
+{
+  const std::string out = "tool_stdout.txt", err = "tool_stderr.txt";
+  const int raw = std::system((std::string(SMP_TOOL) + " " + args + " > " + out + " 2> " + err).c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream o(out), e(err);
+  std::stringstream so, se;
+  so << o.rdbuf();
+  se << e.rdbuf();
+  r.out = so.str();
+  r.err = se.str();
+  return r;
+}
+
+// An error: non-zero exit, exactly one line on stderr that mentions `word`.
+void check_error(const std::string& what, const std::string& args, const std::string& word)
+{
+  const Result r = run(args);
+  const std::size_t lines = std::size_t(std::count(r.err.begin(), r.err.end(), '\n'));
+  SMP_CHECK(r.status != 0 && r.status != -1, what << ": exit status " << r.status);
+  SMP_CHECK(lines == 1 && r.err.find(word) != std::string::npos, what << ": stderr was '" << r.err << "'");
+}
+
+// Size and spread of the pixel values of a PNG.
+bool png_facts(const std::string& file, int& width, int& height, double& spread)
+{
+  cairo_surface_t* s = cairo_image_surface_create_from_png(file.c_str());
+  if(cairo_surface_status(s) != CAIRO_STATUS_SUCCESS) {
+    cairo_surface_destroy(s);
+    return false;
+  }
+  width = cairo_image_surface_get_width(s);
+  height = cairo_image_surface_get_height(s);
+  const int stride = cairo_image_surface_get_stride(s);
+  const unsigned char* data = cairo_image_surface_get_data(s);
+  double sum = 0., sum2 = 0.;
+  std::size_t n = 0;
+  for(int y = 0; y < height; ++y)
+    for(int x = 0; x < width; ++x) {
+      const double g = data[y * stride + 4 * x + 1]; // green channel
+      sum += g;
+      sum2 += g * g;
+      ++n;
+    }
+  spread = std::sqrt(std::max(0., sum2 / n - (sum / n) * (sum / n)));
+  cairo_surface_destroy(s);
+  return true;
+}
+
+void check_outputs()
+{
+  const std::string input = smp_test::data_file("nefertiti.off");
+  fs::remove_all("out_nefertiti");
+  const Result r = run(input + " -o out_nefertiti --size 200 --eta 0.5 --iterations 7");
+  SMP_CHECK(r.status == 0, "tool failed: " << r.err);
+  SMP_CHECK(r.out.find("step 1") != std::string::npos, "no progress line: " << r.out);
+  SMP_CHECK(run(input + " -o out_quiet -q --no-pictures").out.empty(), "--quiet still prints");
+  SMP_CHECK(!fs::exists("out_quiet/nefertiti_uv_stretch.png") && fs::exists("out_quiet/nefertiti.obj"), "--no-pictures");
+
+  // the library's result with the same options
+  Mesh expected;
+  CGAL::IO::read_polygon_mesh(input, expected);
+  auto uv = expected.add_property_map<Mesh::Vertex_index, Kernel::Point_2>("v:uv").first;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh> p(SMP::parameters::eta(0.5).number_of_iterations(7));
+  SMP_CHECK(SMP::parameterize(expected, p, CGAL::Polygon_mesh_processing::longest_border(expected).first, uv) == SMP::OK,
+            "library run failed");
+
+  // the OBJ: same vertices, and texture coordinates equal to the library's to 1e-12
+  std::ifstream obj("out_nefertiti/nefertiti.obj");
+  std::vector<std::array<double, 3> > v;
+  std::vector<std::array<double, 2> > vt;
+  std::size_t f = 0;
+  std::string line;
+  bool mtl = false;
+  while(std::getline(obj, line)) {
+    std::istringstream in(line);
+    std::string key;
+    in >> key;
+    if(key == "v") { std::array<double, 3> x; in >> x[0] >> x[1] >> x[2]; v.push_back(x); }
+    else if(key == "vt") { std::array<double, 2> x; in >> x[0] >> x[1]; vt.push_back(x); }
+    else if(key == "f") ++f;
+    else if(key == "mtllib") mtl = true;
+  }
+  SMP_CHECK(mtl && fs::exists("out_nefertiti/nefertiti.mtl") && fs::exists("out_nefertiti/checker.png"), "MTL or texture missing");
+  SMP_CHECK(v.size() == num_vertices(expected) && vt.size() == v.size() && f == num_faces(expected),
+            "OBJ has " << v.size() << " v, " << vt.size() << " vt, " << f << " f");
+  double err = 0.;
+  std::size_t k = 0;
+  for(Mesh::Vertex_index w : vertices(expected)) {
+    if(k >= vt.size()) break;
+    err = std::max(err, std::hypot(vt[k][0] - uv[w].x(), vt[k][1] - uv[w].y()));
+    ++k;
+  }
+  SMP_CHECK(err < 1e-12, "OBJ texture coordinates differ from the library's by " << err);
+  // and CGAL reads the OBJ back as the same surface
+  Mesh reread;
+  SMP_CHECK(CGAL::IO::read_polygon_mesh("out_nefertiti/nefertiti.obj", reread) && num_faces(reread) == num_faces(expected),
+            "CGAL cannot read the OBJ back");
+
+  // the JSON report
+  boost::property_tree::ptree json;
+  try {
+    boost::property_tree::read_json("out_nefertiti/report.json", json);
+  } catch(const std::exception& e) {
+    SMP_CHECK(false, "report.json does not parse: " << e.what());
+    return;
+  }
+  SMP_CHECK(json.get<std::size_t>("mesh.vertices") == num_vertices(expected) && json.get<std::size_t>("mesh.boundaries") == 1,
+            "mesh facts in the report");
+  SMP_CHECK(json.get<std::string>("method") == "uopt" && json.get<double>("options.eta") == 0.5, "options in the report");
+  SMP_CHECK(json.get_child("history").size() == p.report().history.size(), "history length in the report");
+  SMP_CHECK(json.get<std::size_t>("kept_step") == p.report().kept_step, "kept step in the report");
+  SMP_CHECK(std::abs(json.get<double>("measures.l2_stretch") - p.report().kept().l2_stretch) < 1e-8, "L2 in the report");
+  SMP_CHECK(json.get<int>("measures.flipped_faces") == 0, "flips in the report");
+
+  // the pictures
+  std::size_t pictures = 0;
+  for(const auto& entry : fs::directory_iterator("out_nefertiti"))
+    if(entry.path().extension() == ".png" && entry.path().filename() != "checker.png") {
+      int w = 0, h = 0;
+      double spread = 0.;
+      SMP_CHECK(png_facts(entry.path().string(), w, h, spread), entry.path() << " is not a PNG");
+      SMP_CHECK(w == 200 && h == 200, entry.path() << " is " << w << " x " << h);
+      SMP_CHECK(spread > 10., entry.path() << " looks blank (spread " << spread << ")");
+      ++pictures;
+    }
+  SMP_CHECK(pictures == 7, pictures << " pictures");
+
+  // the other methods and borders run too
+  for(const char* args : {"-m mvc --border circle", "-m lscm", "-m u1 --border ear-aware", "-m u0 --start mvc"}) {
+    const Result o = run(input + " -q --no-pictures -o out_methods " + args);
+    SMP_CHECK(o.status == 0, args << ": " << o.err);
+  }
+  // a closed mesh with --cut, several components with --charts
+  SMP_CHECK(run(smp_test::data_file("bear.off") + " -q --no-pictures --cut -o out_bear").status == 0, "--cut on bear");
+}
+
+void check_errors()
+{
+  check_error("no such file", "does_not_exist.off", "cannot open");
+  std::ofstream("not_a_mesh.off") << "this is not an OFF file\n";
+  check_error("unreadable file", "not_a_mesh.off", "cannot read");
+  std::ofstream("mesh.xyz") << "0 0 0\n";
+  check_error("unknown format", "mesh.xyz", "format");
+  std::ofstream("quads.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n4 0 1 4 3\n4 1 2 5 4\n";
+  check_error("quads", "quads.off", "triangle");
+  check_error("closed mesh", smp_test::data_file("bear.off"), "--cut");
+  std::ofstream("two.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n";
+  check_error("two components", "two.off", "--charts");
+  check_error("eta out of range", smp_test::data_file("nefertiti.off") + " --eta 2", "eta");
+  check_error("iterations not a number", smp_test::data_file("nefertiti.off") + " --iterations many", "iterations");
+  check_error("unknown method", smp_test::data_file("nefertiti.off") + " -m best", "method");
+  check_error("unknown option", smp_test::data_file("nefertiti.off") + " --fast", "option");
+  check_error("natural border folds", smp_test::data_file("three_peaks.off") + " --border natural --no-pictures -o out_fold", "one-to-one");
+  std::ofstream("nan.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
+  const Result nan = run("nan.off -o out_nan");
+  SMP_CHECK(nan.status != 0 && std::count(nan.err.begin(), nan.err.end(), '\n') == 1, "NaN coordinate: " << nan.status << " " << nan.err);
+}
+
+int main()
+{
+  check_outputs();
+  check_errors();
+  return smp_test::summary();
+}

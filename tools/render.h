@@ -1,0 +1,46 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Pictures of a parameterized triangle mesh, written as PNG: the uv layout coloured by stretch
+// (Cairo), the checkerboard texture itself, and the surface rendered off-screen (OSMesa, Mesa's
+// software OpenGL) with the checkerboard or with a stretch colour map. Kept free of CGAL so that
+// it compiles fast in a translation unit of its own.
+
+#ifndef SMP_TOOLS_RENDER_H
+#define SMP_TOOLS_RENDER_H
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace smp_tools {
+
+// A triangle soup with one uv per face corner (seams and charts need several uv per vertex).
+struct Textured_mesh
+{
+  std::vector<std::array<double, 3> > xyz;         // vertex positions
+  std::vector<std::array<int, 3> > faces;          // vertex indices
+  std::vector<std::array<std::array<double, 2>, 3> > corner_uv; // uv per face corner
+  std::vector<double> face_stretch;                // normalized L2 stretch per face (<= 0: degenerate)
+};
+
+// Colour of a stretch value: 1 (no stretch) is blue, 1.6 pale yellow, 2.5 orange, 4 and above
+// dark red; degenerate faces (value <= 0 or not finite) are black.
+std::array<double, 3> stretch_color(double stretch);
+
+// Writes a size x size checkerboard with `checks` squares per side. Returns false on failure.
+bool write_checkerboard_png(const std::string& file, int size, int checks);
+
+// Draws the uv layout in the unit square, faces filled by stretch colour. False on failure.
+bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size);
+
+// Renders the surface with model axis `up` (0: x, 1: y, 2: z) upwards, seen from `yaw` degrees
+// around it (at 0 the viewer is on the -y side of the model for z up, on the +z side otherwise)
+// and `pitch` degrees above, either textured by the checkerboard (`checks` per unit of uv) or
+// coloured by stretch. Returns an empty string on success, else what went wrong.
+std::string render_surface_png(const std::string& file, const Textured_mesh& mesh, int width, int height,
+                               int up, double yaw, double pitch, bool checkerboard, int checks);
+
+} // namespace smp_tools
+
+#endif // SMP_TOOLS_RENDER_H

@@ -1,0 +1,485 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smp-parameterize: parameterizes a triangle mesh file and writes what a user looks at: an OBJ
+// with texture coordinates, its MTL and checkerboard texture, a JSON report and pictures.
+// Run without arguments for the options.
+
+#include "render.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Seam_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh_parameterization/ARAP_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_authalic_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Discrete_conformal_map_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Mean_value_coordinates_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Natural_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Square_border_ear_aware_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/error_message.h>
+#include <CGAL/Surface_mesh_parameterization/make_disk_seam.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize_components.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double>                  Kernel;
+typedef Kernel::Point_2                                 Point_2;
+typedef Kernel::Point_3                                 Point_3;
+typedef CGAL::Surface_mesh<Point_3>                     Mesh;
+typedef Mesh::Vertex_index                              vertex_descriptor;
+typedef Mesh::Halfedge_index                            halfedge_descriptor;
+typedef Mesh::Face_index                                face_descriptor;
+typedef Mesh::Property_map<vertex_descriptor, Point_2>  UV_map;
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace fs = std::filesystem;
+
+namespace {
+
+const char* usage =
+  "usage: smp-parameterize MESH [options]\n"
+  "  MESH                  a triangle mesh: .off, .obj, .ply or .stl\n"
+  "  -o, --output DIR      where to write the results (default: MESHNAME_uv)\n"
+  "  -m, --method M        uopt (default), u1, u0: this package's stretch minimization\n"
+  "                        (U^opt, one step, the start only); for comparison, CGAL's\n"
+  "                        mvc, dcm, dap (fixed border), lscm, arap (free border)\n"
+  "  --eta X               weight update exponent, 0 < X <= 1 (default 1)\n"
+  "  --iterations N        cap on the steps of uopt (default 20)\n"
+  "  --border B            square (default, CGAL's corners), ear-aware (square, corners that\n"
+  "                        avoid flattened border faces), circle, natural (LSCM's border)\n"
+  "  --start S             initial weights of u0/u1/uopt: floater (default) or mvc\n"
+  "  --cut                 open a closed genus-0 mesh along a seam first\n"
+  "  --charts              parameterize each connected component into its own chart\n"
+  "  --size PX             picture size in pixels (default 800)\n"
+  "  --up A                the model's up axis in the pictures: x, y or z (default z)\n"
+  "  --no-pictures         write no PNG picture\n"
+  "  -q, --quiet           no progress lines\n";
+
+struct Options
+{
+  std::string input, output, method = "uopt", border = "square", start = "floater";
+  double eta = 1.;
+  int iterations = 20, size = 800, up = 2;
+  bool cut = false, charts = false, pictures = true, quiet = false;
+};
+
+// One clear line, then the exit status: 2 for a wrong command line, 1 for a failure.
+[[noreturn]] void die(const std::string& message, int status = 1)
+{
+  std::cerr << "smp-parameterize: " << message << std::endl;
+  std::exit(status);
+}
+
+Options parse(int argc, char** argv)
+{
+  Options o;
+  auto value = [&](int& i) -> std::string {
+    if(i + 1 >= argc)
+      die(std::string("option ") + argv[i] + " needs a value", 2);
+    return argv[++i];
+  };
+  auto number = [&](const std::string& option, const std::string& text) {
+    char* end = nullptr;
+    const double x = std::strtod(text.c_str(), &end);
+    if(end == text.c_str() || *end != '\0' || !std::isfinite(x))
+      die("option " + option + ": '" + text + "' is not a number", 2);
+    return x;
+  };
+  for(int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if(a == "-h" || a == "--help") { std::cout << usage; std::exit(0); }
+    else if(a == "-o" || a == "--output") o.output = value(i);
+    else if(a == "-m" || a == "--method") o.method = value(i);
+    else if(a == "--border") o.border = value(i);
+    else if(a == "--start") o.start = value(i);
+    else if(a == "--eta") o.eta = number(a, value(i));
+    else if(a == "--iterations") {
+      const double n = number(a, value(i));
+      if(n < 0 || n > 10000 || n != std::floor(n)) die("option --iterations: give a whole number from 0 to 10000", 2);
+      o.iterations = int(n);
+    }
+    else if(a == "--size") {
+      const double n = number(a, value(i));
+      if(n < 64 || n > 8192 || n != std::floor(n)) die("option --size: give a whole number of pixels from 64 to 8192", 2);
+      o.size = int(n);
+    }
+    else if(a == "--up") {
+      const std::string axis = value(i);
+      if(axis != "x" && axis != "y" && axis != "z") die("option --up: give x, y or z", 2);
+      o.up = axis[0] - 'x';
+    }
+    else if(a == "--cut") o.cut = true;
+    else if(a == "--charts") o.charts = true;
+    else if(a == "--no-pictures") o.pictures = false;
+    else if(a == "-q" || a == "--quiet") o.quiet = true;
+    else if(!a.empty() && a[0] == '-') die("unknown option " + a + " (run without arguments for the options)", 2);
+    else if(o.input.empty()) o.input = a;
+    else die("one mesh at a time: unexpected argument " + a, 2);
+  }
+  if(o.input.empty()) { std::cerr << usage; std::exit(2); }
+  const std::vector<std::string> methods = {"uopt", "u1", "u0", "mvc", "dcm", "dap", "lscm", "arap"};
+  if(std::find(methods.begin(), methods.end(), o.method) == methods.end())
+    die("unknown method '" + o.method + "' (uopt, u1, u0, mvc, dcm, dap, lscm, arap)", 2);
+  if(o.border != "square" && o.border != "ear-aware" && o.border != "circle" && o.border != "natural")
+    die("unknown border '" + o.border + "' (square, ear-aware, circle, natural)", 2);
+  if(o.start != "floater" && o.start != "mvc")
+    die("unknown start '" + o.start + "' (floater, mvc)", 2);
+  if(!(o.eta > 0. && o.eta <= 1.))
+    die("option --eta must be in (0, 1]", 2);
+  if(o.output.empty())
+    o.output = fs::path(o.input).stem().string() + "_uv";
+  return o;
+}
+
+// The border chosen on the command line, behind one type (one instantiation per method).
+struct Chosen_border
+{
+  std::string kind = "square";
+  std::string why; // reason of the last failure of the natural border
+
+  template <typename UVMap, typename VIMap, typename VPMap>
+  SMP::Error_code parameterize(Mesh& mesh, halfedge_descriptor bhd, UVMap uv, VIMap vi, VPMap vp)
+  {
+    if(kind == "ear-aware")
+      return SMP::Square_border_ear_aware_parameterizer_3<Mesh>().parameterize(mesh, bhd, uv, vi, vp);
+    if(kind == "circle")
+      return SMP::Circular_border_arc_length_parameterizer_3<Mesh>().parameterize(mesh, bhd, uv, vi, vp);
+    if(kind == "natural") {
+      SMP::Natural_border_parameterizer_3<Mesh> natural;
+      const SMP::Error_code e = natural.parameterize(mesh, bhd, uv, vi, vp);
+      why = natural.why();
+      return e;
+    }
+    return SMP::Square_border_arc_length_parameterizer_3<Mesh>().parameterize(mesh, bhd, uv, vi, vp);
+  }
+  bool is_border_convex() const { return kind != "natural"; }
+};
+
+typedef SMP::Shape_preserving_parameterizer_3<Mesh, Chosen_border>        Floater;
+typedef SMP::Mean_value_coordinates_parameterizer_3<Mesh, Chosen_border>  MVC;
+
+std::string json_string(const std::string& s)
+{
+  std::ostringstream o;
+  o << '"';
+  for(char c : s) {
+    if(c == '"' || c == '\\') o << '\\' << c;
+    else if(c == '\n') o << "\\n";
+    else if((unsigned char)c < 0x20) o << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
+    else o << c;
+  }
+  o << '"';
+  return o.str();
+}
+
+std::string json_number(double x)
+{
+  if(!std::isfinite(x)) return "null";
+  std::ostringstream o;
+  o << std::setprecision(10) << x;
+  return o.str();
+}
+
+struct Run
+{
+  SMP::Error_code status = SMP::OK;
+  std::string message;
+  std::vector<SMP::Stretch_minimizing_step> history;
+  std::size_t kept_step = 0;
+  std::size_t charts = 1;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Runs `p` on the mesh (one disk, or every component as a chart) and fills `run`.
+template <typename Parameterizer>
+void run_parameterizer(Mesh& mesh, halfedge_descriptor bhd, Parameterizer p, UV_map uv, bool charts, Run& run)
+{
+  if(charts) {
+    std::vector<SMP::Chart> out;
+    run.status = SMP::parameterize_components(mesh, p, uv, &out);
+    run.charts = out.size();
+    for(std::size_t c = 0; c < out.size(); ++c)
+      if(out[c].status != SMP::OK && run.message.empty())
+        run.message = "component " + std::to_string(c) + ": " + SMP::error_message(out[c].status);
+  } else {
+    run.status = SMP::parameterize(mesh, p, bhd, uv);
+  }
+}
+
+// A closed mesh copied as a disk: cut along make_disk_seam()'s seam, seam vertices doubled.
+Mesh cut_open(Mesh& closed)
+{
+  typedef Mesh::Property_map<Mesh::Edge_index, bool> Seam_edges;
+  typedef Mesh::Property_map<vertex_descriptor, bool> Seam_vertices;
+  typedef CGAL::Seam_mesh<Mesh, Seam_edges, Seam_vertices> Seam_mesh;
+  Seam_edges se = closed.add_property_map<Mesh::Edge_index, bool>("e:smp_seam", false).first;
+  Seam_vertices sv = closed.add_property_map<vertex_descriptor, bool>("v:smp_seam", false).first;
+  Seam_mesh seam(closed, se, sv);
+  boost::graph_traits<Seam_mesh>::halfedge_descriptor bhd;
+  std::string why;
+  const SMP::Error_code e = SMP::make_disk_seam(seam, bhd, &why);
+  if(e != SMP::OK)
+    die("cannot cut the mesh open: " + why);
+  Mesh disk;
+  auto index = get(CGAL::dynamic_vertex_property_t<int>(), seam);
+  const auto vpm = get(CGAL::vertex_point, seam);
+  std::vector<vertex_descriptor> made;
+  for(auto v : vertices(seam)) {
+    put(index, v, int(made.size()));
+    made.push_back(disk.add_vertex(get(vpm, v)));
+  }
+  for(auto f : faces(seam)) {
+    std::vector<vertex_descriptor> corners;
+    for(auto h : halfedges_around_face(halfedge(f, seam), seam))
+      corners.push_back(made[get(index, target(h, seam))]);
+    if(disk.add_face(corners) == Mesh::null_face())
+      die("cutting the mesh open failed (is it a manifold surface?)");
+  }
+  closed.remove_property_map(se);
+  closed.remove_property_map(sv);
+  return disk;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  const Options o = parse(argc, argv);
+  const auto start = std::chrono::steady_clock::now();
+
+  // ---- read and check
+  const std::string ext = fs::path(o.input).extension().string();
+  std::string lower = ext;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(lower != ".off" && lower != ".obj" && lower != ".ply" && lower != ".stl")
+    die("unknown file format '" + ext + "' of " + o.input + " (read: .off, .obj, .ply, .stl)");
+  if(!std::ifstream(o.input))
+    die("cannot open " + o.input);
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(o.input, mesh, CGAL::parameters::verbose(false)) || faces(mesh).empty())
+    die("cannot read a polygon mesh from " + o.input);
+  const double read_seconds = seconds_since(start);
+  if(!CGAL::is_triangle_mesh(mesh))
+    die(o.input + " is not a triangle mesh: triangulate it first");
+  for(vertex_descriptor v : vertices(mesh)) {
+    const Point_3& p = mesh.point(v);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      die(o.input + " has a vertex with a non-finite coordinate");
+  }
+  auto cc = mesh.add_property_map<face_descriptor, std::size_t>("f:smp_cc").first;
+  const std::size_t components = PMP::connected_components(mesh, cc);
+  std::vector<halfedge_descriptor> loops;
+  PMP::extract_boundary_cycles(mesh, std::back_inserter(loops));
+  const std::size_t input_vertices = num_vertices(mesh), input_faces = num_faces(mesh);
+  if(components > 1 && !o.charts)
+    die(o.input + " has " + std::to_string(components) + " connected components: add --charts to map each into its own chart");
+  if(loops.empty() && !o.cut)
+    die(o.input + " is a closed surface: add --cut to open it along a seam first (genus 0 only)");
+  if(o.cut && o.charts)
+    die("--cut and --charts do not go together: cut the components one at a time");
+  if(o.cut) {
+    if(!loops.empty())
+      die(o.input + " already has a border: --cut is for closed surfaces");
+    mesh = cut_open(mesh);
+  }
+
+  // ---- parameterize
+  UV_map uv = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0, 0)).first;
+  const halfedge_descriptor bhd = PMP::longest_border(mesh).first;
+  Chosen_border border;
+  border.kind = o.border;
+  Run run;
+  auto progress = [&o, &run](const SMP::Stretch_minimizing_step& s) {
+    run.history.push_back(s);
+    if(!o.quiet)
+      std::cout << "step " << s.step << "  L2 stretch " << std::setprecision(6) << s.l2_stretch << "  Linf "
+                << s.linf_stretch << "  " << std::setprecision(3) << s.seconds << " s" << std::endl;
+  };
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool ours = o.method == "uopt" || o.method == "u1" || o.method == "u0";
+  if(ours) {
+    const unsigned int cap = o.method == "u0" ? 0u : o.method == "u1" ? 1u : unsigned(o.iterations);
+    auto np = SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress);
+    if(o.start == "mvc") {
+      SMP::Stretch_minimizing_parameterizer_3<Mesh, MVC> p(MVC(border), np);
+      run_parameterizer(mesh, bhd, p, uv, o.charts, run);
+      run.kept_step = p.report().kept_step;
+      if(run.message.empty()) run.message = p.report().message;
+    } else {
+      SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
+      run_parameterizer(mesh, bhd, p, uv, o.charts, run);
+      run.kept_step = p.report().kept_step;
+      if(run.message.empty()) run.message = p.report().message;
+    }
+  } else if(o.method == "mvc") {
+    run_parameterizer(mesh, bhd, MVC(border), uv, o.charts, run);
+  } else if(o.method == "dcm") {
+    run_parameterizer(mesh, bhd, SMP::Discrete_conformal_map_parameterizer_3<Mesh, Chosen_border>(border), uv, o.charts, run);
+  } else if(o.method == "dap") {
+    run_parameterizer(mesh, bhd, SMP::Discrete_authalic_parameterizer_3<Mesh, Chosen_border>(border), uv, o.charts, run);
+  } else if(o.method == "lscm") {
+    run_parameterizer(mesh, bhd, SMP::LSCM_parameterizer_3<Mesh>(), uv, o.charts, run);
+  } else {
+    run_parameterizer(mesh, bhd, SMP::ARAP_parameterizer_3<Mesh>(), uv, o.charts, run);
+  }
+  const double parameterize_seconds = seconds_since(t0);
+  if(run.status != SMP::OK && !(o.charts && run.charts > 0 && run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)) {
+    std::string why = run.message.empty() ? border.why : run.message;
+    die(std::string("parameterization failed: ") + SMP::error_message(run.status) + (why.empty() ? "" : ": " + why));
+  }
+
+  // ---- measure (the faces of the parameterized charts)
+  const auto t1 = std::chrono::steady_clock::now();
+  std::vector<face_descriptor> measured;
+  for(face_descriptor f : faces(mesh)) {
+    bool written = true;
+    for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))
+      written = written && std::isfinite(uv[v].x()) && std::isfinite(uv[v].y());
+    if(written) measured.push_back(f);
+  }
+  const SMP::Stretch_statistics stats = SMP::compute_stretch_statistics(measured, mesh, uv);
+  smp_tools::Textured_mesh picture;
+  {
+    double a2 = 0., a3 = 0.;
+    std::vector<SMP::Face_stretch> per_face;
+    for(face_descriptor f : measured) {
+      const halfedge_descriptor h = halfedge(f, mesh);
+      const vertex_descriptor a = source(h, mesh), b = target(h, mesh), c = target(next(h, mesh), mesh);
+      per_face.push_back(SMP::face_stretch(mesh.point(a), mesh.point(b), mesh.point(c), uv[a], uv[b], uv[c]));
+      if(std::isfinite(per_face.back().l2) && per_face.back().area_3d > 0.) {
+        a2 += std::abs(per_face.back().area_uv);
+        a3 += per_face.back().area_3d;
+      }
+      picture.faces.push_back({int(a), int(b), int(c)});
+      picture.corner_uv.push_back({{{uv[a].x(), uv[a].y()}, {uv[b].x(), uv[b].y()}, {uv[c].x(), uv[c].y()}}});
+    }
+    const double normalization = a3 > 0. ? std::sqrt(a2 / a3) : 1.;
+    for(const SMP::Face_stretch& s : per_face)
+      picture.face_stretch.push_back(std::isfinite(s.l2) ? s.l2 * normalization : 0.);
+    for(vertex_descriptor v : vertices(mesh))
+      picture.xyz.push_back({mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()});
+  }
+  const double measure_seconds = seconds_since(t1);
+
+  // ---- write
+  const auto t2 = std::chrono::steady_clock::now();
+  std::error_code ec;
+  fs::create_directories(o.output, ec);
+  if(ec)
+    die("cannot create the output folder " + o.output + ": " + ec.message());
+  const std::string name = fs::path(o.input).stem().string();
+  const fs::path dir(o.output);
+  std::vector<std::string> outputs;
+  {
+    std::ofstream mtl(dir / (name + ".mtl"));
+    mtl << "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd checker.png\n";
+    std::ofstream obj(dir / (name + ".obj"));
+    obj << "# " << name << " parameterized by smp-parameterize (" << o.method << ")\nmtllib " << name << ".mtl\n";
+    obj.precision(17);
+    for(vertex_descriptor v : vertices(mesh))
+      obj << "v " << mesh.point(v) << "\n";
+    for(vertex_descriptor v : vertices(mesh))
+      obj << "vt " << uv[v].x() << " " << uv[v].y() << "\n";
+    obj << "usemtl checker\n";
+    for(face_descriptor f : measured) {
+      obj << "f";
+      for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))
+        obj << " " << v.idx() + 1 << "/" << v.idx() + 1;
+      obj << "\n";
+    }
+    if(!obj || !mtl)
+      die("cannot write the OBJ or MTL file in " + o.output);
+    outputs.push_back(name + ".obj");
+    outputs.push_back(name + ".mtl");
+    if(!smp_tools::write_checkerboard_png((dir / "checker.png").string(), 512, 16))
+      die("cannot write " + (dir / "checker.png").string());
+    outputs.push_back("checker.png");
+  }
+  const double write_seconds = seconds_since(t2);
+
+  const auto t3 = std::chrono::steady_clock::now();
+  if(o.pictures) {
+    const std::string layout = name + "_uv_stretch.png";
+    if(!smp_tools::write_uv_layout_png((dir / layout).string(), picture, o.size))
+      die("cannot write " + layout);
+    outputs.push_back(layout);
+    const struct { const char* view; double yaw, pitch; } views[] = {{"front", 0, 10}, {"side", 90, 10}, {"three_quarter", -40, 20}};
+    for(const auto& view : views)
+      for(bool checker : {true, false}) {
+        const std::string file = name + (checker ? "_checker_" : "_stretch_") + view.view + ".png";
+        const std::string error = smp_tools::render_surface_png((dir / file).string(), picture, o.size, o.size,
+                                                                o.up, view.yaw, view.pitch, checker, 16);
+        if(!error.empty())
+          die("rendering " + file + ": " + error);
+        outputs.push_back(file);
+      }
+  }
+  const double render_seconds = seconds_since(t3);
+
+  // ---- report
+  std::ofstream json(dir / "report.json");
+  json << "{\n  \"input\": " << json_string(o.input) << ",\n"
+       << "  \"mesh\": {\"vertices\": " << input_vertices << ", \"faces\": " << input_faces
+       << ", \"boundaries\": " << loops.size() << ", \"components\": " << components
+       << ", \"cut_open\": " << (o.cut ? "true" : "false") << "},\n"
+       << "  \"method\": " << json_string(o.method) << ",\n"
+       << "  \"options\": {\"border\": " << json_string(o.border) << ", \"start\": " << json_string(o.start)
+       << ", \"eta\": " << json_number(o.eta) << ", \"iterations\": " << o.iterations
+       << ", \"charts\": " << (o.charts ? "true" : "false") << "},\n"
+       << "  \"status\": " << json_string(SMP::error_message(run.status)) << ",\n"
+       << "  \"history\": [";
+  for(std::size_t h = 0; h < run.history.size(); ++h) {
+    const auto& s = run.history[h];
+    json << (h ? ",\n    " : "\n    ") << "{\"step\": " << s.step << ", \"l2_stretch\": " << json_number(s.l2_stretch)
+         << ", \"linf_stretch\": " << json_number(s.linf_stretch) << ", \"flipped_faces\": " << s.flipped_faces
+         << ", \"degenerate_uv_faces\": " << s.degenerate_uv_faces << ", \"seconds\": " << json_number(s.seconds) << "}";
+  }
+  json << (run.history.empty() ? "" : "\n  ") << "],\n"
+       << "  \"kept_step\": " << (ours ? std::to_string(run.kept_step) : std::string("null")) << ",\n"
+       << "  \"measures\": {\"faces\": " << stats.number_of_faces << ", \"l2_stretch\": " << json_number(stats.l2_stretch)
+       << ", \"linf_stretch\": " << json_number(stats.linf_stretch) << ", \"edge_distortion\": " << json_number(stats.edge_distortion)
+       << ", \"angle_distortion\": " << json_number(stats.angle_distortion) << ", \"area_distortion\": "
+       << json_number(stats.area_distortion) << ", \"flipped_faces\": " << stats.flipped_faces
+       << ", \"degenerate_uv_faces\": " << stats.degenerate_uv_faces << ", \"degenerate_3d_faces\": "
+       << stats.degenerate_3d_faces << "},\n"
+       << "  \"seconds\": {\"read\": " << json_number(read_seconds) << ", \"parameterize\": " << json_number(parameterize_seconds)
+       << ", \"measure\": " << json_number(measure_seconds) << ", \"write\": " << json_number(write_seconds)
+       << ", \"pictures\": " << json_number(render_seconds) << "},\n"
+       << "  \"outputs\": [";
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    json << (i ? ", " : "") << json_string(outputs[i]);
+  json << "]\n}\n";
+  if(!json)
+    die("cannot write report.json in " + o.output);
+
+  if(!o.quiet)
+    std::cout << o.method << ": L2 stretch " << std::setprecision(6) << stats.l2_stretch << ", Linf " << stats.linf_stretch
+              << ", " << stats.flipped_faces << " flipped, " << stats.degenerate_uv_faces << " degenerate faces\n"
+              << "wrote " << fs::absolute(dir).string() << "/{" << name << ".obj, report.json"
+              << (o.pictures ? ", *.png" : "") << "}" << std::endl;
+  return EXIT_SUCCESS;
+}
