@@ -27,10 +27,11 @@ namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
 ///
-/// A "natural" border (Yoshizawa et al. 2004, figure 12): the border of a free-border
-/// conformal map (by default CGAL's `LSCM_parameterizer_3`), scaled into the unit square and
-/// then fixed. A fixed-border method started from it keeps the border shape of the conformal
-/// map, which suits a surface far from a square much better than a square does.
+/// A "natural" border (Yoshizawa et al. 2004 \cgalCite{cgal:ybs-fssmm-04}, figure 12): the
+/// border of a free-border conformal map (by default CGAL's `LSCM_parameterizer_3`, Lévy et
+/// al. 2002 \cgalCite{cgal:lprm-lscm-02}), scaled into the unit square and then fixed. A
+/// fixed-border method started from it keeps the border shape of the conformal map, which
+/// suits a surface far from a square much better than a square does.
 ///
 /// Such a border is generally not convex, so Tutte's theorem no longer rules out flipped
 /// faces: `Stretch_minimizing_parameterizer_3` then checks every step and never returns a
@@ -40,15 +41,24 @@ namespace Surface_mesh_parameterization {
 ///
 /// \cgalModels `Parameterizer_3`
 ///
-/// \tparam TriangleMesh_ a model of `FaceGraph`
-/// \tparam FreeBorderParameterizer_ a free-border parameterizer writing every vertex of the
-///         component. <b>%Default:</b> `LSCM_parameterizer_3<TriangleMesh_>`
+/// \tparam TriangleMesh_ a model of `FaceGraph` (a triangle mesh)
+/// \tparam FreeBorderParameterizer_ a model of `Parameterizer_3` that maps the whole component
+///         (border included) to the plane and writes every vertex of it.
+///         <b>%Default:</b> `LSCM_parameterizer_3<TriangleMesh_>`
+///
+/// It is used as the border parameterizer of a fixed-border method, e.g.
+/// \code
+///   typedef SMP::Natural_border_parameterizer_3<Mesh>                 Border;
+///   typedef SMP::Shape_preserving_parameterizer_3<Mesh, Border>       Initializer;
+///   SMP::Stretch_minimizing_parameterizer_3<Mesh, Initializer>         parameterizer;
+/// \endcode
 template <class TriangleMesh_, class FreeBorderParameterizer_ = Default>
 class Natural_border_parameterizer_3
 {
 public:
   /// Triangle mesh type
   typedef TriangleMesh_                                                    Triangle_mesh;
+  /// Triangle mesh type (the spelling of CGAL's parameterizers)
   typedef TriangleMesh_                                                    TriangleMesh;
   /// Free-border parameterizer type
   typedef typename Default::Get<FreeBorderParameterizer_, LSCM_parameterizer_3<TriangleMesh_> >::type
@@ -64,6 +74,7 @@ private:
 
 public:
   /// Constructor.
+  /// \param free the free-border parameterizer whose border is used
   explicit Natural_border_parameterizer_3(const Free_border_parameterizer& free = Free_border_parameterizer())
     : m_free(free)
   { }
@@ -71,8 +82,18 @@ public:
   /// Runs the free-border parameterizer on the component of `bhd` (with its own maps: the
   /// caller's maps get only the border) and places the border of `bhd` where it put it, scaled
   /// so that its bounding box fits the unit square.
+  ///
+  /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and a 2D point as value
+  /// \tparam VertexIndexMap ignored: the free-border parameterizer gets a numbering of its own
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `bool` as value
+  ///
+  /// \param mesh the triangle mesh
+  /// \param bhd a halfedge on the border to parameterize
+  /// \param uvmap receives the position in the plane of every vertex of the border
+  /// \param vpmap receives `true` for every vertex of the border
+  ///
   /// \returns `OK`, the error of the free-border parameterizer, or `ERROR_NO_1_TO_1_MAPPING` if
-  /// the border it gives is not a simple polygon.
+  /// the border it gives is not a simple polygon (`why()` tells which).
   template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVMap uvmap,
                           VertexIndexMap, VertexParameterizedMap vpmap)

@@ -22,14 +22,15 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgStretchMinimizingParameterizationRef
 ///
 /// Floater's shape-preserving parameterization (M. S. Floater, "Parametrization and smooth
-/// approximation of surface triangulations", CAGD 14, 1997): a fixed-border parameterizer
-/// whose weights are convex combinations obtained from the geodesic polar map of each one-ring.
+/// approximation of surface triangulations", CAGD 14, 1997 \cgalCite{cgal:f-psast-97}): a
+/// fixed-border parameterizer whose weights are convex combinations obtained from the geodesic
+/// polar map of each one-ring.
 /// The weights are positive, so with a convex border the result is one-to-one (Tutte, Floater),
 /// and a planar mesh whose border is fixed at its own positions is reproduced exactly.
 ///
-/// CGAL's `Mean_value_coordinates_parameterizer_3` is Floater's later (2003) method; this
-/// class is the 1997 one, which Yoshizawa et al. (2004) use as the starting point of the
-/// stretch minimization (`Stretch_minimizing_parameterizer_3`).
+/// CGAL's `Mean_value_coordinates_parameterizer_3` is Floater's later (2003) method
+/// \cgalCite{cgal:f-mvc-03}; this class is the 1997 one, which Yoshizawa et al. (2004) use as
+/// the starting point of the stretch minimization (`Stretch_minimizing_parameterizer_3`).
 ///
 /// The weights of a vertex come from its whole one-ring at once: they are computed once per
 /// vertex and served to the neighbour-by-neighbour interface of the base class.
@@ -38,7 +39,7 @@ namespace Surface_mesh_parameterization {
 ///
 /// \cgalModels `Parameterizer_3`
 ///
-/// \tparam TriangleMesh_ a model of `FaceGraph`
+/// \tparam TriangleMesh_ a model of `FaceGraph` (a triangle mesh)
 /// \tparam BorderParameterizer_ a model of `Parameterizer_3` that fixes the border (convex for
 ///         a one-to-one result). <b>%Default:</b>
 /// \code
@@ -84,6 +85,7 @@ public:
 
   /// Triangle mesh type
   typedef TriangleMesh_                                       Triangle_mesh;
+  /// Triangle mesh type (the spelling of CGAL's parameterizers)
   typedef TriangleMesh_                                       TriangleMesh;
 
   /// Mesh vertex type
@@ -108,6 +110,18 @@ public:
   /// Computes a one-to-one mapping (if the border is convex) from the connected component of
   /// `bhd` to the plane; see `Fixed_border_parameterizer_3::parameterize()`.
   ///
+  /// \tparam VertexUVmap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and a 2D point as value
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `int` as value
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `bool` as value
+  ///
+  /// \param mesh the triangle mesh
+  /// \param bhd a halfedge on the border of the component to parameterize
+  /// \param uvmap receives the position in the plane of every vertex of the component
+  /// \param vimap numbers the vertices of the component (the rows of the linear system)
+  /// \param vpmap receives `true` for every parameterized vertex
+  ///
+  /// \returns `OK`, or the error of the border parameterizer or of the solver
+  ///
   /// \pre `mesh` is a triangle mesh and the component of `bhd` a topological disk.
   /// \pre `vimap` numbers the vertices of that component from 0 (as `parameterize()` does).
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
@@ -122,11 +136,11 @@ public:
   }
 
 protected:
-  /// Returns the shape-preserving weight of the neighbour `neighbor_vertex_v_j` of
-  /// `main_vertex_v_i`. The weights of the whole ring are computed on the first query of a
-  /// vertex (the query for the neighbour `source(halfedge(main_vertex_v_i, mesh), mesh)`, where
-  /// a walk around the ring starts); NaN if they are undefined (a zero-length edge, fewer than
-  /// three neighbours).
+  /// Returns the shape-preserving weight \f$ \lambda_{ij} \f$ of the neighbour
+  /// `neighbor_vertex_v_j` of `main_vertex_v_i`. The weights of the whole ring are computed on
+  /// the first query of a vertex (the query for the neighbour
+  /// `source(halfedge(main_vertex_v_i, mesh), mesh)`, where a walk around the ring starts); NaN
+  /// if they are undefined (a zero-length edge, fewer than three neighbours).
   virtual NT compute_w_ij(const Triangle_mesh& mesh,
                           vertex_descriptor main_vertex_v_i,
                           Vertex_around_target_circulator<Triangle_mesh> neighbor_vertex_v_j) const

@@ -40,13 +40,23 @@ namespace Surface_mesh_parameterization {
 ///
 /// \cgalModels `Parameterizer_3`
 ///
-/// \tparam TriangleMesh_ a model of `FaceGraph`
+/// \tparam TriangleMesh_ a model of `FaceGraph` (a triangle mesh)
+///
+/// It is used as the border parameterizer of a fixed-border method, e.g.
+/// \code
+///   typedef SMP::Square_border_ear_aware_parameterizer_3<Mesh>        Border;
+///   typedef SMP::Shape_preserving_parameterizer_3<Mesh, Border>       Initializer;
+///   SMP::Stretch_minimizing_parameterizer_3<Mesh, Initializer>         parameterizer;
+/// \endcode
+///
+/// \sa `Square_border_arc_length_parameterizer_3`
 template <class TriangleMesh_>
 class Square_border_ear_aware_parameterizer_3
 {
 public:
   /// Triangle mesh type
   typedef TriangleMesh_                                                  Triangle_mesh;
+  /// Triangle mesh type (the spelling of CGAL's parameterizers)
   typedef TriangleMesh_                                                  TriangleMesh;
   /// Mesh vertex type
   typedef typename boost::graph_traits<Triangle_mesh>::vertex_descriptor   vertex_descriptor;
@@ -59,8 +69,21 @@ private:
 
 public:
   /// Places the vertices of the border of `bhd` on the unit square and sets them in `vpmap`.
+  ///
+  /// \tparam VertexUVMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and a 2D point as value
+  /// \tparam VertexIndexMap a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `int` as value
+  /// \tparam VertexParameterizedMap a model of `ReadWritePropertyMap` with `vertex_descriptor` as key and `bool` as value
+  ///
+  /// \param mesh the triangle mesh
+  /// \param bhd a halfedge on the border to parameterize
+  /// \param uvmap receives the position on the square of every vertex of the border
+  /// \param vimap vertex index map, passed on to CGAL's square border parameterizer
+  /// \param vpmap receives `true` for every vertex of the border
+  ///
   /// \returns `OK`, or `ERROR_BORDER_TOO_SHORT` for a border of fewer than four vertices or of
   /// zero length.
+  ///
+  /// \pre `bhd` is a border halfedge of `mesh` (a null halfedge gives `ERROR_BORDER_TOO_SHORT`).
   template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code parameterize(const Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVMap uvmap,
                           VertexIndexMap vimap, VertexParameterizedMap vpmap)

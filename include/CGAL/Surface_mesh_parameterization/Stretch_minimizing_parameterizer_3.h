@@ -35,14 +35,18 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgStretchMinimizingParameterizationRef
 ///
 /// The stretch-minimizing parameterization of S. Yoshizawa, A. Belyaev and H.-P. Seidel,
-/// "A moving mesh approach to stretch-minimizing mesh parameterization" (2004).
+/// "A moving mesh approach to stretch-minimizing mesh parameterization"
+/// \cgalCite{cgal:ybs-mmasm-05}, first presented as "A fast and simple stretch-minimizing mesh
+/// parameterization" (Shape Modeling International 2004) \cgalCite{cgal:ybs-fssmm-04}.
 ///
 /// Starting from a fixed-border parameterization with positive weights \f$ w^0_{ij} \f$
 /// (\f$ U^0 \f$: by default Floater's shape-preserving weights on the unit square), each step
-/// computes the L2 stretch \f$ \sigma_j \f$ of every vertex (Sander et al. 2001, area-weighted
-/// over the faces around it), divides the weights by \f$ \sigma_j^{\eta} \f$ and solves again:
-/// \f$ w^{h+1}_{ij} = w^h_{ij} / \sigma_j(U^h)^{\eta} \f$. Vertices move towards the stretched
-/// regions. The iteration stops when the normalized L2 stretch of the mesh stops decreasing
+/// computes the L2 stretch \f$ \sigma_j \f$ of every vertex (Sander et al. 2001
+/// \cgalCite{cgal:ssgh-tmpm-01}, area-weighted over the faces around it), divides the
+/// weights by \f$ \sigma_j^{\eta} \f$ and solves again:
+/// \f$ w^{h+1}_{ij} = w^h_{ij} / \sigma_j(U^h)^{\eta} \f$. A vertex of high stretch pulls its
+/// neighbours less, so the regions of high stretch get more room in the plane. The iteration
+/// stops when the normalized L2 stretch of the mesh stops decreasing
 /// (a decrease below a relative \f$ 10^{-10} \f$, at the level of rounding, counts as none),
 /// and the best parameterization \f$ U^{opt} \f$ is written; one step gives \f$ U^1 \f$.
 /// The weights stay positive, so with a convex border no face flips at any step.
@@ -66,11 +70,13 @@ namespace Surface_mesh_parameterization {
 ///
 /// \cgalModels `Parameterizer_3`
 ///
-/// \tparam TriangleMesh_ a model of `FaceGraph`
+/// \tparam TriangleMesh_ a model of `FaceGraph` (a triangle mesh, e.g. `Surface_mesh`,
+///         `Polyhedron_3` or `Seam_mesh`)
 /// \tparam InitialParameterizer_ a class derived from `Fixed_border_parameterizer_3` whose
-///         weights are positive (`Shape_preserving_parameterizer_3`,
-///         `Mean_value_coordinates_parameterizer_3`, ...). Its border parameterizer fixes the
-///         border; only its weights are used, the linear systems are solved here.
+///         weights are non-negative with a positive sum around every vertex
+///         (`Shape_preserving_parameterizer_3`, `Mean_value_coordinates_parameterizer_3`, ...).
+///         Its border parameterizer fixes the border; only its weights are used, the linear
+///         systems are solved here.
 ///         <b>%Default:</b>
 /// \code
 ///   Shape_preserving_parameterizer_3<TriangleMesh_, Square_border_arc_length_parameterizer_3<TriangleMesh_> >
@@ -81,6 +87,9 @@ namespace Surface_mesh_parameterization {
 ///   CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
 ///                                             Eigen::COLAMDOrdering<int> > >
 /// \endcode
+///
+/// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
+/// \sa `CGAL::Surface_mesh_parameterization::Stretch_minimizing_report`
 template <class TriangleMesh_,
           class InitialParameterizer_ = Default,
           class SolverTraits_ = Default>
@@ -89,6 +98,7 @@ class Stretch_minimizing_parameterizer_3
 public:
   /// Triangle mesh type
   typedef TriangleMesh_                                       Triangle_mesh;
+  /// Triangle mesh type (the spelling of CGAL's parameterizers)
   typedef TriangleMesh_                                       TriangleMesh;
 
 #ifndef DOXYGEN_RUNNING
@@ -117,10 +127,11 @@ public:
   /// Mesh halfedge type
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
 
-  /// Default cap on the number of reweighting steps.
+  /// Default cap on the number of reweighting steps (the named parameter `number_of_iterations`).
   static constexpr unsigned int default_number_of_iterations = 20;
 
-  /// Builds the paper's method: \f$ \eta = 1 \f$, stop when the stretch increases.
+  /// Builds the paper's method: \f$ \eta = 1 \f$, stop when the stretch increases, at most
+  /// `default_number_of_iterations` steps.
   /// \param initializer the parameterizer that gives the border and the weights of \f$ U^0 \f$
   /// \param solver_traits the sparse solver
   explicit Stretch_minimizing_parameterizer_3(const Initial_parameterizer& initializer = Initial_parameterizer(),
@@ -129,21 +140,23 @@ public:
       m_report(std::make_shared<Stretch_minimizing_report>())
   { }
 
-  /// Builds the method with options.
+  /// Builds the method with options, from a default-constructed initial parameterizer.
   ///
-  /// \param np an optional sequence of \ref bgl_namedparameters "Named Parameters" among the ones listed below
+  /// \param np a sequence of named parameters among the ones listed below, e.g.
+  ///        `SMP::parameters::eta(0.5).number_of_iterations(10)`
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{eta}
   ///     \cgalParamDescription{exponent of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$;
   ///                           smaller values take smaller, steadier steps}
-  ///     \cgalParamType{double in \f$ (0, 1] \f$ (`SMP::parameters::eta`)}
+  ///     \cgalParamType{double in \f$ (0, 1] \f$ (`SMP::parameters::eta()`)}
   ///     \cgalParamDefault{1, as in the paper}
+  ///     \cgalParamExtra{a value outside \f$ (0, 1] \f$ makes `parameterize()` return `ERROR_WRONG_PARAMETER`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{number_of_iterations}
   ///     \cgalParamDescription{cap on the number of reweighting steps: 0 gives \f$ U^0 \f$, 1 gives \f$ U^1 \f$}
   ///     \cgalParamType{unsigned int}
-  ///     \cgalParamDefault{20}
+  ///     \cgalParamDefault{20 (`default_number_of_iterations`)}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{verbose}
   ///     \cgalParamDescription{if `true`, one line per step is written to `std::cerr`}
@@ -163,7 +176,11 @@ public:
     : Stretch_minimizing_parameterizer_3(Initial_parameterizer(), np)
   { }
 
-  /// Builds the method from an initializer and options (see the constructor above).
+  /// Builds the method from an initializer and options.
+  /// \param initializer the parameterizer that gives the border and the weights of \f$ U^0 \f$
+  /// \param np a sequence of named parameters: `eta`, `number_of_iterations`, `verbose` and
+  ///        `visitor`, as for the constructor above
+  /// \param solver_traits the sparse solver
   template <typename T, typename Tag, typename Base>
   Stretch_minimizing_parameterizer_3(const Initial_parameterizer& initializer,
                                      const Named_function_parameters<T, Tag, Base>& np,
@@ -192,8 +209,36 @@ public:
   /// \param uvmap receives the parameterization of the vertices of that component (on success)
   /// \param vimap vertex index map
   /// \param vpmap receives `true` for every parameterized vertex
-  /// \param np options overriding those given to the constructor for this call
-  ///        (`eta`, `number_of_iterations`, `verbose`, `visitor`)
+  /// \param np an optional sequence of named parameters among the ones listed below; each one
+  ///        given overrides, for this call only, the value given to the constructor
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{eta}
+  ///     \cgalParamDescription{exponent of the weight update, in \f$ (0, 1] \f$}
+  ///     \cgalParamType{double}
+  ///     \cgalParamDefault{the value given to the constructor (1 if none)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_iterations}
+  ///     \cgalParamDescription{cap on the number of reweighting steps}
+  ///     \cgalParamType{unsigned int}
+  ///     \cgalParamDefault{the value given to the constructor (20 if none)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{verbose}
+  ///     \cgalParamDescription{if `true`, one line per step is written to `std::cerr`}
+  ///     \cgalParamType{bool}
+  ///     \cgalParamDefault{the value given to the constructor (`false` if none)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{visitor}
+  ///     \cgalParamDescription{called after every solve with a `const Stretch_minimizing_step&`;
+  ///                           returning `false` stops the iteration}
+  ///     \cgalParamType{a callable returning `bool` or `void`}
+  ///     \cgalParamDefault{the visitor given to the constructor, if any}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \pre `uvmap`, `vimap` and `vpmap` hold an entry for every vertex of the component of `bhd`
+  ///      (as `CGAL::Surface_mesh_parameterization::parameterize()` provides). Everything else
+  ///      is checked: bad input gives an error code below, never undefined behaviour.
   ///
   /// \returns `OK`, or:
   /// - `ERROR_WRONG_PARAMETER`: `eta` outside \f$ (0, 1] \f$, `bhd` not a border halfedge, or
@@ -228,7 +273,8 @@ public:
     return run(mesh, bhd, uvmap, vimap, vpmap, eta, cap, verbose, visitor);
   }
 
-  /// The outcome of the last call of `parameterize()` on this object or a copy of it.
+  /// The outcome of the last call of `parameterize()` on this object or a copy of it
+  /// (`CGAL::Surface_mesh_parameterization::parameterize()` calls a copy).
   const Stretch_minimizing_report& report() const { return *m_report; }
 
   /// The exponent \f$ \eta \f$ given to the constructor.

@@ -39,7 +39,8 @@ enum class Stretch_minimizing_stop
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
-/// The outcome of one call of `Stretch_minimizing_parameterizer_3::parameterize()`.
+/// The outcome of one call of `Stretch_minimizing_parameterizer_3::parameterize()`, returned
+/// by `Stretch_minimizing_parameterizer_3::report()`.
 struct Stretch_minimizing_report
 {
   Error_code status = OK;                           ///< the value that the call returned

@@ -12,6 +12,8 @@ namespace Surface_mesh_parameterization {
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// Returns a short English description of `code`. Unlike CGAL 5.5.1's `get_error_message()`,
 /// whose table is one entry out of step with the enum, it matches every `Error_code` by name.
+/// \param code a value returned by a parameterizer
+/// \returns a static string, never null
 inline const char* error_message(Error_code code)
 {
   switch(code) {

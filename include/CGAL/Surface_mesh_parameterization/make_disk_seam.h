@@ -75,10 +75,11 @@ void shortest_paths(const TriangleMesh& tm, VertexIndex index, VertexPointMap vp
 /// (`Seam_mesh::add_seams()`), so that they cut every handle.
 ///
 /// \tparam TriangleMesh a model of `FaceGraph`, with an internal vertex point map
-/// \tparam SeamEdgeMap, SeamVertexMap the property maps of the `Seam_mesh`
+/// \tparam SeamEdgeMap,SeamVertexMap the property maps of the `Seam_mesh`
 ///
 /// \param mesh a seam mesh over a closed, connected triangle mesh, with no seam yet
 /// \param bhd receives a border halfedge of `mesh` (on the new seam)
+/// \param why if not null, receives the reason of a failure
 ///
 /// \returns `OK`, or `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 /// `ERROR_NO_TOPOLOGICAL_BALL` (a border, several components, or a genus above 0), with the

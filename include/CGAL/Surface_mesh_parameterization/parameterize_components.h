@@ -30,7 +30,9 @@ struct Chart
   std::size_t faces = 0;        ///< faces of the component
   Error_code status = OK;       ///< what its parameterization returned
   double area_3d = 0.;          ///< its surface area
+  /// abscissa of the lower left corner of its box in the final uv map (`y`: its ordinate)
   double x = 0., y = 0.;        ///< lower left corner of its box in the final uv map
+  /// width of its box in the final uv map, 0 if not parameterized (`height`: its height)
   double width = 0., height = 0.; ///< size of its box in the final uv map (0 if not parameterized)
 };
 
@@ -50,6 +52,9 @@ struct Chart
 /// \tparam Parameterizer a model of `Parameterizer_3` for `TriangleMesh`
 /// \tparam VertexUVmap a model of `ReadWritePropertyMap` from `vertex_descriptor` to a 2D point
 ///
+/// \param mesh the mesh; its components are parameterized, the mesh itself is not modified
+/// \param parameterizer the parameterizer, copied for each component
+/// \param uvmap receives the position in the plane of every vertex of the parameterized components
 /// \param charts if not null, receives one `Chart` per component, in the order of
 ///        `Polygon_mesh_processing::connected_components()`
 /// \param gap the space left around each chart, as a fraction of the square root of the total

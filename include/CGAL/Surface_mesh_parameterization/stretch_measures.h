@@ -22,7 +22,7 @@ namespace Surface_mesh_parameterization {
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// Stretch of the affine map \f$ S \f$ from a parameter triangle to its 3D triangle
-/// (Sander, Snyder, Gortler, Hoppe 2001). With \f$ a = S_s \cdot S_s \f$,
+/// (Sander, Snyder, Gortler, Hoppe 2001 \cgalCite{cgal:ssgh-tmpm-01}). With \f$ a = S_s \cdot S_s \f$,
 /// \f$ b = S_s \cdot S_t \f$, \f$ c = S_t \cdot S_t \f$:
 /// \f$ L^2 = \sqrt{(a + c) / 2} \f$ and \f$ L^\infty = \sqrt{((a + c) + \sqrt{(a - c)^2 + 4 b^2}) / 2} \f$.
 /// Both are infinite when the parameter triangle has zero area.
@@ -56,6 +56,8 @@ struct Stretch_statistics
 /// triangle `(p1, p2, p3)`.
 /// \tparam Point_3 a 3D point type with `x()`, `y()`, `z()`
 /// \tparam Point_2 a 2D point type with `x()`, `y()`
+/// \param p1,p2,p3 the corners of the 3D triangle
+/// \param q1,q2,q3 the corners of the parameter triangle, in the same order
 template <typename Point_3, typename Point_2>
 Face_stretch face_stretch(const Point_3& p1, const Point_3& p2, const Point_3& p3,
                           const Point_2& q1, const Point_2& q2, const Point_2& q3)
@@ -115,8 +117,23 @@ void flatten(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uv
 /// \tparam FaceRange a range of `face_descriptor`
 /// \tparam TriangleMesh a model of `FaceGraph`
 /// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D point
-/// \param np optional \ref bgl_namedparameters "Named Parameters": `vertex_point_map`
-///        (default `get(CGAL::vertex_point, tm)`)
+/// \tparam T,Tag,Base the types of the named parameters `np` (deduced)
+///
+/// \param face_range the faces to measure
+/// \param tm the mesh of these faces
+/// \param uvmap the parameterization to measure
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and a 3D point as value}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the measures, in a `Stretch_statistics`
+///
 /// \pre every face of `face_range` is a triangle and every vertex of it has a uv position
 template <typename FaceRange, typename TriangleMesh, typename VertexUVMap,
           typename T = bool, typename Tag = CGAL::internal_np::all_default_t,
@@ -153,6 +170,9 @@ Stretch_statistics compute_stretch_statistics(const FaceRange& face_range, const
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// Measures the parameterization `uvmap` over all faces of `tm`
 /// (see the overload taking a face range).
+/// \param tm the mesh
+/// \param uvmap the parameterization to measure
+/// \pre every face of `tm` is a triangle and every vertex has a uv position
 template <typename TriangleMesh, typename VertexUVMap>
 Stretch_statistics compute_stretch_statistics(const TriangleMesh& tm, VertexUVMap uvmap)
 {
@@ -162,6 +182,10 @@ Stretch_statistics compute_stretch_statistics(const TriangleMesh& tm, VertexUVMa
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// Measures the parameterization `uvmap` over all faces of `tm`, with named parameters
 /// (see the overload taking a face range).
+/// \param tm the mesh
+/// \param uvmap the parameterization to measure
+/// \param np named parameters: `vertex_point_map`, as for the overload taking a face range
+/// \pre every face of `tm` is a triangle and every vertex has a uv position
 template <typename TriangleMesh, typename VertexUVMap, typename T, typename Tag, typename Base>
 Stretch_statistics compute_stretch_statistics(const TriangleMesh& tm, VertexUVMap uvmap,
                                               const Named_function_parameters<T, Tag, Base>& np)
@@ -175,8 +199,27 @@ Stretch_statistics compute_stretch_statistics(const TriangleMesh& tm, VertexUVMa
 /// around it (Yoshizawa et al. 2004, eq. 1), times the normalization of
 /// `Stretch_statistics::l2_stretch`. A vertex with no such face gets 0.
 ///
+/// \tparam FaceRange a range of `face_descriptor`
+/// \tparam TriangleMesh a model of `FaceGraph`
+/// \tparam VertexUVMap a model of `ReadablePropertyMap` from `vertex_descriptor` to a 2D point
 /// \tparam VertexStretchMap a model of `WritablePropertyMap` from `vertex_descriptor` to `double`
-/// \param np optional: `vertex_point_map`
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param face_range the faces to measure
+/// \param tm the mesh of these faces
+/// \param uvmap the parameterization to measure
+/// \param vertex_stretch_map receives the stretch of every vertex of the faces of `face_range`
+/// \param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `tm`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and a 3D point as value}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \pre every face of `face_range` is a triangle and every vertex of it has a uv position
 template <typename FaceRange, typename TriangleMesh, typename VertexUVMap, typename VertexStretchMap,
           typename NamedParameters = parameters::Default_named_parameters>
 void compute_vertex_stretch(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uvmap,
