@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Install the Debian 12 packages needed to build and test the package.
+# Install the Debian 12 packages needed to build and test the package (usage: install-deps.sh [more packages]).
 # Idempotent: does nothing (and prints nothing) when everything is present.
 set -euo pipefail
 
+# The build's packages, and any further ones named on the command line.
 packages=(g++ cmake make pkg-config libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
-          libcairo2-dev libosmesa6-dev)
+          libcairo2-dev libosmesa6-dev "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -77,12 +77,17 @@ Face_stretch face_stretch(const Point_3& p1, const Point_3& p2, const Point_3& p
 
 namespace internal {
 
-// Copies the triangles of `face_range` into flat arrays; `vertices` receives the local numbering.
-template <typename FaceRange, typename TriangleMesh, typename VertexUVMap, typename VertexPointMap>
-void flatten(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uvmap, VertexPointMap vpm,
+// Copies the triangles of `face_range` into flat arrays, with the points of the
+// `vertex_point_map` of `np`; `vertices` receives the local numbering.
+template <typename FaceRange, typename TriangleMesh, typename VertexUVMap, typename NamedParameters>
+void flatten(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uvmap, const NamedParameters& np,
              Flat_triangles& flat, std::vector<Vec2>& uv,
              std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor>& vertices)
 {
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
   auto local = get(CGAL::dynamic_vertex_property_t<int>(), tm); // index + 1; 0: unseen
@@ -142,14 +147,10 @@ Stretch_statistics compute_stretch_statistics(const FaceRange& face_range, const
                                               VertexUVMap uvmap,
                                               const Named_function_parameters<T, Tag, Base>& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
   internal::Flat_triangles flat;
   std::vector<internal::Vec2> uv;
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertices;
-  internal::flatten(face_range, tm, uvmap, vpm, flat, uv, vertices);
+  internal::flatten(face_range, tm, uvmap, np, flat, uv, vertices);
 
   internal::Flat_stretch stretch;
   const internal::Flat_stretch_summary s = stretch.evaluate(flat, uv);
@@ -226,14 +227,10 @@ void compute_vertex_stretch(const FaceRange& face_range, const TriangleMesh& tm,
                             VertexStretchMap vertex_stretch_map,
                             const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, tm));
   internal::Flat_triangles flat;
   std::vector<internal::Vec2> uv;
   std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertices;
-  internal::flatten(face_range, tm, uvmap, vpm, flat, uv, vertices);
+  internal::flatten(face_range, tm, uvmap, np, flat, uv, vertices);
 
   internal::Flat_stretch stretch;
   const internal::Flat_stretch_summary s = stretch.evaluate(flat, uv);
