@@ -27,12 +27,7 @@ data="examples/Stretch_minimizing_parameterization/data"
 start_seconds=$(date +%s)
 
 # --- what is needed -----------------------------------------------------------------------
-bash scripts/install-deps.sh
-if ! command -v gnuplot >/dev/null 2>&1; then
-  SUDO=()
-  if [ "$(id -u)" -ne 0 ] && command -v sudo >/dev/null 2>&1; then
-    SUDO=(sudo)
-  fi
+bash scripts/install-deps.sh gnuplot-nox
   echo "benchmark: installing gnuplot-nox" >&2
   "${SUDO[@]}" apt-get update
   "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends gnuplot-nox

@@ -5,7 +5,7 @@ set -euo pipefail
 
 # The build's packages, and any further ones named on the command line.
 packages=(g++ cmake make pkg-config libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
-          libcairo2-dev libosmesa6-dev "$@")
+          libcairo2-dev libosmesa6-dev libsuitesparse-dev "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -253,6 +253,11 @@ std::vector<Method> all_methods()
   const std::string square = "unit square, arc length";
   const std::string bicgstab = "BiCGSTAB + ILUT (CGAL default)";
   const std::string sparse_lu = "SparseLU";
+#if defined(CGAL_SMP_USE_UMFPACK)
+  const std::string minimizer_solver = "UMFPACK (METIS, no refinement)";
+#else
+  const std::string minimizer_solver = sparse_lu;
+#endif
   std::vector<Method> m = {
     {"a_harmonic", "(a) Eck et al. harmonic map (CGAL Discrete_conformal_map)", square, bicgstab,
      run_fixed<Harmonic>},
@@ -261,14 +266,14 @@ std::vector<Method> all_methods()
     {"c_intrinsic", "(c) Desbrun et al. intrinsic, 0.5 conformal + 0.5 authalic", square, bicgstab,
      run_fixed<Intrinsic>},
     {"u0_minimizer", "U^0 alone: stretch minimizer, 0 steps (one factorization, two solves)", square,
-     sparse_lu, [](Context& c, Child_result& r) { return run_minimizer(c, r, 0, 1.); }},
-    {"e_u1", "(e) U^1", square, sparse_lu,
+     minimizer_solver, [](Context& c, Child_result& r) { return run_minimizer(c, r, 0, 1.); }},
+    {"e_u1", "(e) U^1", square, minimizer_solver,
      [](Context& c, Child_result& r) { return run_minimizer(c, r, 1, 1.); }},
-    {"f_uopt", "(f_h) U^opt, eta = 1", square, sparse_lu,
+    {"f_uopt", "(f_h) U^opt, eta = 1", square, minimizer_solver,
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 1.);
      }},
-    {"uopt_eta05", "U^opt, eta = 0.5", square, sparse_lu,
+    {"uopt_eta05", "U^opt, eta = 0.5", square, minimizer_solver,
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 0.5);
      }},
@@ -541,6 +546,10 @@ std::string fmt(double x, int precision = 3, bool fixed = false)
   if(!std::isfinite(x))
     return "-";
   std::ostringstream s;
+  if(!fixed && std::abs(x) >= std::pow(10., precision) && std::abs(x) < 1e12) {
+    s << std::fixed << std::setprecision(0) << x; // 1024, not 1.02e+03
+    return s.str();
+  }
   if(fixed)
     s << std::fixed;
   s << std::setprecision(precision) << x;

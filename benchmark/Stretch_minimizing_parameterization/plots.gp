@@ -9,7 +9,7 @@ has_data(f) = system("grep -qs '^[0-9]' '".f."' && echo 1 || echo 0") eq "1"
 
 set terminal pngcairo size 1300,1050 noenhanced font "sans,11"
 set grid
-set key outside below Left reverse maxrows 7
+set key outside below center Left reverse maxrows 7 height 1.5
 set style data linespoints
 set pointsize 1.2
 # 14 distinct line types (the default cycle repeats after 8); line i is the i-th block

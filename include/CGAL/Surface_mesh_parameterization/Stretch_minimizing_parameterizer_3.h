@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Exposed_initializer.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Weighted_laplacian_system.h>
+#include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
 
@@ -87,6 +88,12 @@ namespace Surface_mesh_parameterization {
 ///   CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
 ///                                             Eigen::COLAMDOrdering<int> > >
 /// \endcode
+///         or, when the macro `CGAL_SMP_USE_UMFPACK` is defined (the package's CMake target
+///         defines it if SuiteSparse's UMFPACK is found), about 1.7 times faster here:
+/// \code
+///   CGAL::Eigen_solver_traits<Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType> >
+/// \endcode
+///         used with METIS ordering and without UMFPACK's iterative refinement.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
 /// \sa `CGAL::Surface_mesh_parameterization::Stretch_minimizing_report`
@@ -107,10 +114,7 @@ public:
     Shape_preserving_parameterizer_3<TriangleMesh_,
                                      Square_border_arc_length_parameterizer_3<TriangleMesh_> > >::type
                                                               Initial_parameterizer;
-  typedef typename Default::Get<
-    SolverTraits_,
-    CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType,
-                                              Eigen::COLAMDOrdering<int> > > >::type
+  typedef typename Default::Get<SolverTraits_, internal::Default_solver_traits>::type
                                                               Solver_traits;
 #else
   /// Initial parameterizer type

@@ -5,6 +5,7 @@
 #define CGAL_SMP_INTERNAL_WEIGHTED_LAPLACIAN_SYSTEM_H
 
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
@@ -98,7 +99,7 @@ public:
       m_X = solver.solveWithGuess(m_B, m_X);
     } else {
       if(!m_analysed) {
-        solver.analyzePattern(m_A);
+        analyze_pattern(solver, m_A);
         m_analysed = true;
       }
       solver.factorize(m_A);
