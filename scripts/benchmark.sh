@@ -28,10 +28,6 @@ start_seconds=$(date +%s)
 
 # --- what is needed -----------------------------------------------------------------------
 bash scripts/install-deps.sh gnuplot-nox
-  echo "benchmark: installing gnuplot-nox" >&2
-  "${SUDO[@]}" apt-get update
-  "${SUDO[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends gnuplot-nox
-fi
 
 # --- build --------------------------------------------------------------------------------
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSMP_BUILD_BENCHMARK=ON \
