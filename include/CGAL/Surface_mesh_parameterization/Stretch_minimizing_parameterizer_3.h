@@ -291,9 +291,6 @@ public:
   Initial_parameterizer& initial_parameterizer() { return m_initializer; }
 
 private:
-  typedef typename boost::property_traits<
-            typename boost::property_map<Triangle_mesh, vertex_point_t>::const_type>::value_type Point_3;
-
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code run(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
                  VertexIndexMap vimap, VertexParameterizedMap vpmap,
