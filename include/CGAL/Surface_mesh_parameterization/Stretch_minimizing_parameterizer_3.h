@@ -256,6 +256,10 @@ public:
   ///
   /// `report().message` says more. On an error, no interior vertex is written (the border
   /// parameterizer may already have written the border).
+  ///
+  /// A null `bhd` gets an error code here, but CGAL 5.5.1's free function
+  /// `CGAL::Surface_mesh_parameterization::parameterize()` uses `bhd` before it calls this
+  /// function: check `bhd` before calling the free function, or call this member.
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap,
             typename NamedParameters = parameters::Default_named_parameters>
   Error_code parameterize(Triangle_mesh& mesh,
