@@ -218,6 +218,8 @@ private:
   bool chain(std::vector<std::pair<int, int> >& fan)
   {
     const std::size_t d = fan.size();
+    if(d == 0)
+      return false;
     int current = fan[0].first;
     for(std::size_t k = 0; k < d; ++k) {
       auto it = std::find_if(fan.begin(), fan.end(), [current](const std::pair<int, int>& e) { return e.first == current; });
@@ -227,7 +229,7 @@ private:
       current = it->second;
       it->first = -1; // used
     }
-    return d >= 1 && current == ring[ring.size() - d];
+    return current == ring[ring.size() - d];
   }
 
   Error_code fail(Error_code e, const char* why)
