@@ -67,7 +67,14 @@ const char* usage =
   "  --iterations N        cap on the steps of uopt (default 20)\n"
   "  --border B            square (default, CGAL's corners), ear-aware (square, corners that\n"
   "                        avoid flattened border faces), circle, natural (LSCM's border)\n"
-  "  --start S             initial weights of u0/u1/uopt: floater (default) or mvc\n"
+  "  --preset P            paper (default: the paper's method) or lowest (clamped cotangent\n"
+  "                        start, edge update, halving eta: lower stretch for about twice the time)\n"
+  "  --start S             start weights of u0/u1/uopt: floater, mvc or cot (clamped cotangent)\n"
+  "  --update U            stretch that divides the weights: vertex, symmetric or edge\n"
+  "  --rule R              when a step does not lower the stretch: stop or halve (eta)\n"
+  "  --polish N            then at most N Newton steps on Sander's stretch energy (flip-free)\n"
+  "  --polish-time S       time budget of the polish in seconds\n"
+  "  --free-border         let the polish move the border (never crossing itself)\n"
   "  --cut                 open a closed genus-0 mesh along a seam first\n"
   "  --charts              parameterize each connected component into its own chart\n"
   "  --size PX             picture size in pixels (default 800)\n"
@@ -77,10 +84,11 @@ const char* usage =
 
 struct Options
 {
-  std::string input, output, method = "uopt", border = "square", start = "floater";
-  double eta = 1.;
-  int iterations = 20, size = 800, up = 2;
-  bool cut = false, charts = false, pictures = true, quiet = false;
+  std::string input, output, method = "uopt", border = "square", preset = "paper";
+  std::string start, update, rule; // empty: the preset's
+  double eta = 1., polish_time = 0.;
+  int iterations = 20, polish = 0, size = 800, up = 2;
+  bool cut = false, charts = false, pictures = true, quiet = false, free_border = false;
 };
 
 // One clear line, then the exit status: 2 for a wrong command line, 1 for a failure.
@@ -111,7 +119,20 @@ Options parse(int argc, char** argv)
     else if(a == "-o" || a == "--output") o.output = value(i);
     else if(a == "-m" || a == "--method") o.method = value(i);
     else if(a == "--border") o.border = value(i);
+    else if(a == "--preset") o.preset = value(i);
     else if(a == "--start") o.start = value(i);
+    else if(a == "--update") o.update = value(i);
+    else if(a == "--rule") o.rule = value(i);
+    else if(a == "--polish") {
+      const double n = number(a, value(i));
+      if(n < 0 || n > 100000 || n != std::floor(n)) die("option --polish: give a whole number from 0 to 100000", 2);
+      o.polish = int(n);
+    }
+    else if(a == "--polish-time") {
+      o.polish_time = number(a, value(i));
+      if(!(o.polish_time > 0.)) die("option --polish-time: give a positive number of seconds", 2);
+    }
+    else if(a == "--free-border") o.free_border = true;
     else if(a == "--eta") o.eta = number(a, value(i));
     else if(a == "--iterations") {
       const double n = number(a, value(i));
@@ -142,8 +163,21 @@ Options parse(int argc, char** argv)
     die("unknown method '" + o.method + "' (uopt, u1, u0, mvc, dcm, dap, lscm, arap)", 2);
   if(o.border != "square" && o.border != "ear-aware" && o.border != "circle" && o.border != "natural")
     die("unknown border '" + o.border + "' (square, ear-aware, circle, natural)", 2);
-  if(o.start != "floater" && o.start != "mvc")
-    die("unknown start '" + o.start + "' (floater, mvc)", 2);
+  if(o.preset != "paper" && o.preset != "lowest")
+    die("unknown preset '" + o.preset + "' (paper, lowest)", 2);
+  if(o.start.empty()) o.start = o.preset == "lowest" ? "cot" : "floater";
+  if(o.update.empty()) o.update = o.preset == "lowest" ? "edge" : "vertex";
+  if(o.rule.empty()) o.rule = o.preset == "lowest" ? "halve" : "stop";
+  if(o.start != "floater" && o.start != "mvc" && o.start != "cot")
+    die("unknown start '" + o.start + "' (floater, mvc, cot)", 2);
+  if(o.update != "vertex" && o.update != "symmetric" && o.update != "edge")
+    die("unknown update '" + o.update + "' (vertex, symmetric, edge)", 2);
+  if(o.rule != "stop" && o.rule != "halve")
+    die("unknown rule '" + o.rule + "' (stop, halve)", 2);
+  if(o.polish_time > 0. && o.polish == 0)
+    o.polish = 100000; // a time budget alone: as many steps as it allows
+  if(o.free_border && o.polish == 0)
+    die("--free-border is a mode of the polish: give --polish N or --polish-time S too", 2);
   if(!(o.eta > 0. && o.eta <= 1.))
     die("option --eta must be in (0, 1]", 2);
   if(o.output.empty())
@@ -207,6 +241,7 @@ struct Run
   std::vector<SMP::Stretch_minimizing_step> history;
   std::size_t kept_step = 0;
   std::size_t charts = 1;
+  SMP::Stretch_minimizing_polish polish;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t)
@@ -314,27 +349,33 @@ int main(int argc, char** argv)
   border.kind = o.border;
   Run run;
   auto progress = [&o, &run](const SMP::Stretch_minimizing_step& s) {
-    run.history.push_back(s);
+    if(!s.polish)
+      run.history.push_back(s);
     if(!o.quiet)
-      std::cout << "step " << s.step << "  L2 stretch " << std::setprecision(6) << s.l2_stretch << "  Linf "
+      std::cout << (s.polish ? "polish step " : "step ") << s.step << "  L2 stretch " << std::setprecision(6) << s.l2_stretch << "  Linf "
                 << s.linf_stretch << "  " << std::setprecision(3) << s.seconds << " s" << std::endl;
   };
   const auto t0 = std::chrono::steady_clock::now();
   const bool ours = o.method == "uopt" || o.method == "u1" || o.method == "u0";
   if(ours) {
     const unsigned int cap = o.method == "u0" ? 0u : o.method == "u1" ? 1u : unsigned(o.iterations);
-    auto np = SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress);
-    if(o.start == "mvc") {
-      SMP::Stretch_minimizing_parameterizer_3<Mesh, MVC> p(MVC(border), np);
-      run_parameterizer(mesh, bhd, p, uv, o.charts, run);
-      run.kept_step = p.report().kept_step;
-      if(run.message.empty()) run.message = p.report().message;
-    } else {
-      SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
-      run_parameterizer(mesh, bhd, p, uv, o.charts, run);
-      run.kept_step = p.report().kept_step;
-      if(run.message.empty()) run.message = p.report().message;
-    }
+    const SMP::Start_weights start = o.start == "mvc" ? SMP::Start_weights::MEAN_VALUE
+                                   : o.start == "cot" ? SMP::Start_weights::CLAMPED_COTANGENT
+                                                      : SMP::Start_weights::SHAPE_PRESERVING;
+    const SMP::Stretch_update update = o.update == "edge" ? SMP::Stretch_update::EDGE
+                                     : o.update == "symmetric" ? SMP::Stretch_update::SYMMETRIC
+                                                               : SMP::Stretch_update::VERTEX;
+    const SMP::Step_rule rule = o.rule == "halve" ? SMP::Step_rule::HALVE_ETA : SMP::Step_rule::STOP_AT_INCREASE;
+    const unsigned int polish = o.method == "uopt" ? unsigned(o.polish) : 0u;
+    auto np = SMP::parameters::start_weights(start, SMP::parameters::stretch_update(update,
+              SMP::parameters::step_rule(rule, SMP::parameters::polish_iterations(polish,
+              SMP::parameters::polish_time_budget(o.polish_time, SMP::parameters::free_border(o.free_border,
+              SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress)))))));
+    SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
+    run_parameterizer(mesh, bhd, p, uv, o.charts, run);
+    run.kept_step = p.report().kept_step;
+    run.polish = p.report().polish;
+    if(run.message.empty()) run.message = p.report().message;
   } else if(o.method == "mvc") {
     run_parameterizer(mesh, bhd, MVC(border), uv, o.charts, run);
   } else if(o.method == "dcm") {
@@ -447,8 +488,11 @@ int main(int argc, char** argv)
        << ", \"boundaries\": " << loops.size() << ", \"components\": " << components
        << ", \"cut_open\": " << (o.cut ? "true" : "false") << "},\n"
        << "  \"method\": " << json_string(o.method) << ",\n"
-       << "  \"options\": {\"border\": " << json_string(o.border) << ", \"start\": " << json_string(o.start)
-       << ", \"eta\": " << json_number(o.eta) << ", \"iterations\": " << o.iterations
+       << "  \"options\": {\"border\": " << json_string(o.border) << ", \"preset\": " << json_string(o.preset)
+       << ", \"start\": " << json_string(o.start) << ", \"update\": " << json_string(o.update)
+       << ", \"rule\": " << json_string(o.rule) << ", \"eta\": " << json_number(o.eta) << ", \"iterations\": " << o.iterations
+       << ", \"polish\": " << o.polish << ", \"polish_time\": " << json_number(o.polish_time)
+       << ", \"free_border\": " << (o.free_border ? "true" : "false")
        << ", \"charts\": " << (o.charts ? "true" : "false") << "},\n"
        << "  \"status\": " << json_string(SMP::error_message(run.status)) << ",\n"
        << "  \"history\": [";
@@ -460,6 +504,10 @@ int main(int argc, char** argv)
   }
   json << (run.history.empty() ? "" : "\n  ") << "],\n"
        << "  \"kept_step\": " << (ours ? std::to_string(run.kept_step) : std::string("null")) << ",\n"
+       << "  \"polish\": {\"ran\": " << (run.polish.ran() ? "true" : "false") << ", \"iterations\": "
+       << run.polish.iterations << ", \"l2_before\": " << json_number(run.polish.l2_before) << ", \"l2_after\": "
+       << json_number(run.polish.l2_after) << ", \"seconds\": " << json_number(run.polish.seconds)
+       << ", \"message\": " << json_string(run.polish.message) << "},\n"
        << "  \"measures\": {\"faces\": " << stats.number_of_faces << ", \"l2_stretch\": " << json_number(stats.l2_stretch)
        << ", \"linf_stretch\": " << json_number(stats.linf_stretch) << ", \"edge_distortion\": " << json_number(stats.edge_distortion)
        << ", \"angle_distortion\": " << json_number(stats.angle_distortion) << ", \"area_distortion\": "

@@ -7,14 +7,19 @@
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_options.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_report.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Exposed_initializer.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Stretch_minimizing_settings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Stretch_update_ratios.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Weighted_laplacian_system.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -150,6 +155,11 @@ public:
   ///        `SMP::parameters::eta(0.5).number_of_iterations(10)`
   ///
   /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{preset}
+  ///     \cgalParamDescription{a set of the options below with a name; options given beside it override it}
+  ///     \cgalParamType{`Stretch_minimizing_preset`}
+  ///     \cgalParamDefault{`Stretch_minimizing_preset::PAPER`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{eta}
   ///     \cgalParamDescription{exponent of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$;
   ///                           smaller values take smaller, steadier steps}
@@ -158,9 +168,41 @@ public:
   ///     \cgalParamExtra{a value outside \f$ (0, 1] \f$ makes `parameterize()` return `ERROR_WRONG_PARAMETER`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{number_of_iterations}
-  ///     \cgalParamDescription{cap on the number of reweighting steps: 0 gives \f$ U^0 \f$, 1 gives \f$ U^1 \f$}
+  ///     \cgalParamDescription{cap on the number of solves after \f$ U^0 \f$: 0 gives \f$ U^0 \f$, 1 gives \f$ U^1 \f$}
   ///     \cgalParamType{unsigned int}
   ///     \cgalParamDefault{20 (`default_number_of_iterations`)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{start_weights}
+  ///     \cgalParamDescription{the weights of \f$ U^0 \f$}
+  ///     \cgalParamType{`Start_weights`}
+  ///     \cgalParamDefault{`Start_weights::INITIALIZER`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{stretch_update}
+  ///     \cgalParamDescription{the stretch that divides each weight at each step}
+  ///     \cgalParamType{`Stretch_update`}
+  ///     \cgalParamDefault{`Stretch_update::VERTEX`, as in the paper}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{step_rule}
+  ///     \cgalParamDescription{what to do when a step does not decrease the stretch}
+  ///     \cgalParamType{`Step_rule`}
+  ///     \cgalParamDefault{`Step_rule::STOP_AT_INCREASE`, as in the paper}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{polish_iterations}
+  ///     \cgalParamDescription{after \f$ U^{opt} \f$, at most this many iterations of a projected Newton
+  ///                           descent of Sander's L2 stretch energy, flip-free by construction of its line search (0: none)}
+  ///     \cgalParamType{unsigned int}
+  ///     \cgalParamDefault{0}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{polish_time_budget}
+  ///     \cgalParamDescription{time budget of the polish, in seconds (0: none)}
+  ///     \cgalParamType{double}
+  ///     \cgalParamDefault{0}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{free_border}
+  ///     \cgalParamDescription{if `true`, the polish moves the border vertices too, and never lets the border
+  ///                           cross itself; the result is scaled into the unit square}
+  ///     \cgalParamType{bool}
+  ///     \cgalParamDefault{`false`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{verbose}
   ///     \cgalParamDescription{if `true`, one line per step is written to `std::cerr`}
@@ -182,8 +224,7 @@ public:
 
   /// Builds the method from an initializer and options.
   /// \param initializer the parameterizer that gives the border and the weights of \f$ U^0 \f$
-  /// \param np a sequence of named parameters: `eta`, `number_of_iterations`, `verbose` and
-  ///        `visitor`, as for the constructor above
+  /// \param np a sequence of named parameters, the ones of the constructor above
   /// \param solver_traits the sparse solver
   template <typename T, typename Tag, typename Base>
   Stretch_minimizing_parameterizer_3(const Initial_parameterizer& initializer,
@@ -191,13 +232,7 @@ public:
                                      const Solver_traits& solver_traits = Solver_traits())
     : Stretch_minimizing_parameterizer_3(initializer, solver_traits)
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
-    m_eta = choose_parameter(get_parameter(np, internal_np::eta), 1.);
-    m_max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                        default_number_of_iterations);
-    m_verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
-    m_visitor = internal::make_step_visitor(get_parameter(np, CGAL::internal_np::visitor));
+    m_settings = internal::read_settings(np, m_settings);
   }
 
   /// Computes \f$ U^{opt} \f$ of the connected component of `bhd` and writes it to `uvmap`.
@@ -216,29 +251,10 @@ public:
   /// \param np an optional sequence of named parameters among the ones listed below; each one
   ///        given overrides, for this call only, the value given to the constructor
   ///
-  /// \cgalNamedParamsBegin
-  ///   \cgalParamNBegin{eta}
-  ///     \cgalParamDescription{exponent of the weight update, in \f$ (0, 1] \f$}
-  ///     \cgalParamType{double}
-  ///     \cgalParamDefault{the value given to the constructor (1 if none)}
-  ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{number_of_iterations}
-  ///     \cgalParamDescription{cap on the number of reweighting steps}
-  ///     \cgalParamType{unsigned int}
-  ///     \cgalParamDefault{the value given to the constructor (20 if none)}
-  ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{verbose}
-  ///     \cgalParamDescription{if `true`, one line per step is written to `std::cerr`}
-  ///     \cgalParamType{bool}
-  ///     \cgalParamDefault{the value given to the constructor (`false` if none)}
-  ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{visitor}
-  ///     \cgalParamDescription{called after every solve with a `const Stretch_minimizing_step&`;
-  ///                           returning `false` stops the iteration}
-  ///     \cgalParamType{a callable returning `bool` or `void`}
-  ///     \cgalParamDefault{the visitor given to the constructor, if any}
-  ///   \cgalParamNEnd
-  /// \cgalNamedParamsEnd
+  /// The named parameters are the ones of the constructor (`preset`, `eta`, `number_of_iterations`,
+  /// `start_weights`, `stretch_update`, `step_rule`, `polish_iterations`, `polish_time_budget`,
+  /// `free_border`, `verbose`, `visitor`); each one given overrides, for this call only, the value
+  /// given to the constructor (a preset resets the options of the constructor that it sets).
   ///
   /// \pre `uvmap`, `vimap` and `vpmap` hold an entry for every vertex of the component of `bhd`
   ///      (as `CGAL::Surface_mesh_parameterization::parameterize()` provides). Everything else
@@ -269,16 +285,7 @@ public:
                           VertexParameterizedMap vpmap,
                           const NamedParameters& np = parameters::default_values())
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
-    const double eta = choose_parameter(get_parameter(np, internal_np::eta), m_eta);
-    const unsigned int cap = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                              m_max_iterations);
-    const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), m_verbose);
-    internal::Step_visitor visitor = internal::make_step_visitor(get_parameter(np, CGAL::internal_np::visitor));
-    if(!visitor)
-      visitor = m_visitor;
-    return run(mesh, bhd, uvmap, vimap, vpmap, eta, cap, verbose, visitor);
+    return run(mesh, bhd, uvmap, vimap, vpmap, internal::read_settings(np, m_settings));
   }
 
   /// The outcome of the last call of `parameterize()` on this object or a copy of it
@@ -286,10 +293,10 @@ public:
   const Stretch_minimizing_report& report() const { return *m_report; }
 
   /// The exponent \f$ \eta \f$ given to the constructor.
-  double eta() const { return m_eta; }
+  double eta() const { return m_settings.eta; }
 
   /// The cap on the number of steps given to the constructor.
-  unsigned int number_of_iterations() const { return m_max_iterations; }
+  unsigned int number_of_iterations() const { return m_settings.max_iterations; }
 
   /// The parameterizer that gives the border and the weights of \f$ U^0 \f$.
   Initial_parameterizer& initial_parameterizer() { return m_initializer; }
@@ -298,7 +305,7 @@ private:
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code run(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
                  VertexIndexMap vimap, VertexParameterizedMap vpmap,
-                 double eta, unsigned int cap, bool verbose, const internal::Step_visitor& visitor)
+                 const internal::Stretch_minimizing_settings& settings)
   {
     typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
     const auto start = std::chrono::steady_clock::now();
@@ -310,7 +317,7 @@ private:
       return e;
     };
 
-    if(!(eta > 0. && eta <= 1.))
+    if(!(settings.eta > 0. && settings.eta <= 1.))
       return fail(ERROR_WRONG_PARAMETER, "eta must be in (0, 1]");
 
     internal::Disk_component<Triangle_mesh> dc;
@@ -338,65 +345,18 @@ private:
     }
 
     std::vector<double> w;
-    if(!initial_weights(mesh, dc, w))
+    if(!initial_weights(mesh, dc, settings.start, w))
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,
                   "the initial weights of an interior vertex are not finite and positive "
                   "(degenerate faces, e.g. zero-length edges, around it)");
 
-    internal::Weighted_laplacian_system<Solver_traits> system(dc);
-    internal::Flat_stretch stretch;
-    std::vector<double> sigma, factor(dc.flat.xyz.size());
     std::vector<internal::Vec2> best_uv;
-    for(std::size_t h = 0;; ++h) {
-      if(!system.solve(w, uv, m_solver_traits))
-        return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
-      const internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv);
-
-      Stretch_minimizing_step step;
-      step.step = h;
-      step.l2_stretch = s.l2;
-      step.linf_stretch = s.linf;
-      step.flipped_faces = s.flipped;
-      step.degenerate_uv_faces = s.degenerate_uv;
-      step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      rep.history.push_back(step);
-      rep.degenerate_3d_faces = s.degenerate_3d;
-      if(verbose)
-        std::cerr << "stretch minimization: step " << h << "  L2 " << s.l2 << "  Linf " << s.linf
-                  << "  flipped " << s.flipped << "  degenerate " << s.degenerate_uv << "  "
-                  << step.seconds << " s" << std::endl;
-
-      const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;
-      // a decrease at the level of rounding is no decrease: it would only prolong the iteration
-      const bool better = valid && (best_uv.empty() ||
-                                    s.l2 < rep.history[rep.kept_step].l2_stretch * (1. - 1e-10));
-      if(better) {
-        rep.kept_step = h;
-        best_uv = uv;
-      }
-      const bool go_on = visitor ? visitor(step) : true;
-      if(!valid)
-        rep.stop = Stretch_minimizing_stop::FLIPPED_FACES;
-      else if(!better)
-        rep.stop = Stretch_minimizing_stop::STRETCH_INCREASED;
-      else if(h >= cap)
-        rep.stop = Stretch_minimizing_stop::ITERATION_CAP;
-      else if(!go_on)
-        rep.stop = Stretch_minimizing_stop::VISITOR;
-      if(rep.stop != Stretch_minimizing_stop::NOT_RUN)
-        break;
-
-      // w_ij <- w_ij / sigma_j^eta, with sigma scaled by the mesh RMS: a common factor of all
-      // sigma_j leaves the solution unchanged and keeps the weights from drifting in magnitude
-      stretch.vertex_stretch(dc.flat, s.rms, sigma);
-      for(std::size_t v = 0; v < sigma.size(); ++v)
-        factor[v] = std::pow(sigma[v] / s.rms, -eta);
-      for(std::size_t e = 0; e < w.size(); ++e)
-        w[e] *= factor[dc.ring[e]];
-    }
-
+    if(!iterate(dc, settings, start, w, uv, best_uv))
+      return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
     if(best_uv.empty())
       return fail(ERROR_NO_1_TO_1_MAPPING, "the initial parameterization has flipped faces");
+    if(settings.polish())
+      polish(dc, settings, start, best_uv);
     for(std::size_t v = 0; v < dc.vertices.size(); ++v) {
       put(uvmap, dc.vertices[v], Point_2(best_uv[v][0], best_uv[v][1]));
       put(vpmap, dc.vertices[v], true);
@@ -405,10 +365,189 @@ private:
     return OK;
   }
 
-  // w^0 from the initializer, in the ring order of `dc`; around a closed hole, where the
-  // initializer cannot see the virtual faces, shape-preserving weights of the flat ring
+  // Solves, measures and reweights until the rule of `settings` stops; `best_uv` receives the
+  // best flip-free parameterization (empty if U^0 has flipped faces). False if a solve fails.
+  bool iterate(const internal::Disk_component<Triangle_mesh>& dc,
+               const internal::Stretch_minimizing_settings& settings,
+               std::chrono::steady_clock::time_point start,
+               std::vector<double>& w, std::vector<internal::Vec2>& uv,
+               std::vector<internal::Vec2>& best_uv)
+  {
+    Stretch_minimizing_report& rep = *m_report;
+    internal::Weighted_laplacian_system<Solver_traits> system(dc);
+    internal::Flat_stretch stretch;
+    internal::Stretch_update_ratios ratios;
+    ratios.init(settings.update, dc);
+    std::vector<double> w_kept, ratio_kept;
+    const double eta_floor = settings.eta / 16.;
+    double eta = settings.eta;
+    for(std::size_t h = 0;; ++h) {
+      if(!system.solve(w, uv, m_solver_traits))
+        return false;
+      const internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv);
+
+      Stretch_minimizing_step step;
+      step.step = h;
+      step.eta = h == 0 ? 0. : eta;
+      step.l2_stretch = s.l2;
+      step.linf_stretch = s.linf;
+      step.flipped_faces = s.flipped;
+      step.degenerate_uv_faces = s.degenerate_uv;
+      step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      rep.history.push_back(step);
+      rep.degenerate_3d_faces = s.degenerate_3d;
+      if(settings.verbose)
+        std::cerr << "stretch minimization: step " << h << "  eta " << step.eta << "  L2 " << s.l2
+                  << "  Linf " << s.linf << "  flipped " << s.flipped << "  degenerate "
+                  << s.degenerate_uv << "  " << step.seconds << " s" << std::endl;
+
+      const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;
+      // a decrease at the level of rounding is no decrease: it would only prolong the iteration
+      const bool better = valid && (best_uv.empty() ||
+                                    s.l2 < rep.history[rep.kept_step].l2_stretch * (1. - 1e-10));
+      if(better) {
+        rep.kept_step = h;
+        best_uv = uv;
+        w_kept = w;
+        ratios.compute(dc, stretch, s.rms, ratio_kept);
+      }
+      const bool go_on = settings.visitor ? settings.visitor(step) : true;
+      if(best_uv.empty())
+        rep.stop = Stretch_minimizing_stop::FLIPPED_FACES;
+      else if(!better && (settings.rule == Step_rule::STOP_AT_INCREASE || eta / 2. < eta_floor))
+        rep.stop = valid ? Stretch_minimizing_stop::STRETCH_INCREASED : Stretch_minimizing_stop::FLIPPED_FACES;
+      else if(h >= settings.max_iterations)
+        rep.stop = Stretch_minimizing_stop::ITERATION_CAP;
+      else if(!go_on)
+        rep.stop = Stretch_minimizing_stop::VISITOR;
+      if(rep.stop != Stretch_minimizing_stop::NOT_RUN)
+        return true;
+
+      // a rejected step is taken again from the kept one, half as long
+      if(!better)
+        eta /= 2.;
+      for(std::size_t e = 0; e < w.size(); ++e)
+        w[e] = w_kept[e] * std::pow(ratio_kept[e], -eta);
+    }
+  }
+
+  // Lowers the stretch of `uv` (U^opt) further by a flip-free projected Newton descent of
+  // Sander's energy; `uv` is left as it is if the polish cannot start.
+  void polish(const internal::Disk_component<Triangle_mesh>& dc,
+              const internal::Stretch_minimizing_settings& settings,
+              std::chrono::steady_clock::time_point start, std::vector<internal::Vec2>& uv)
+  {
+    Stretch_minimizing_polish& pol = m_report->polish;
+    pol.free_border = settings.free_border;
+    std::vector<char> fixed(dc.flat.xyz.size(), 0);
+    for(std::size_t v = dc.vertices.size(); v < fixed.size(); ++v)
+      fixed[v] = 1; // hole centres: they only keep the holes from folding
+    if(!settings.free_border)
+      for(int v : dc.border)
+        fixed[v] = 1;
+    internal::Sander_polish_settings ps;
+    ps.max_iterations = settings.polish_iterations;
+    ps.time_budget = settings.polish_seconds;
+    ps.free_border = settings.free_border;
+
+    internal::Flat_stretch stretch;
+    auto visitor = [&](const internal::Sander_polish_step& s) {
+      const internal::Flat_stretch_summary m = stretch.evaluate(dc.flat, *s.uv);
+      Stretch_minimizing_step step;
+      step.step = s.iteration;
+      step.polish = true;
+      step.l2_stretch = m.l2;
+      step.linf_stretch = m.linf;
+      step.flipped_faces = m.flipped;
+      step.degenerate_uv_faces = m.degenerate_uv;
+      step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      pol.history.push_back(step);
+      if(settings.verbose)
+        std::cerr << "stretch minimization: polish " << step.step << "  L2 " << m.l2 << "  Linf " << m.linf
+                  << "  " << step.seconds << " s" << std::endl;
+      return settings.visitor ? settings.visitor(step) : true;
+    };
+    if(settings.free_border)
+      open_flat_ears(dc, uv);
+    internal::Sander_energy_polisher<> polisher;
+    const internal::Sander_polish_result r =
+      polisher.polish(dc.flat, dc.virtual_tri, fixed, dc.border, uv, ps, visitor);
+    pol.seconds = r.seconds;
+    if(r.status != internal::Sander_polish_status::OK) {
+      pol.message = r.message;
+      return;
+    }
+    typedef internal::Sander_polish_stop Stop;
+    pol.stop = r.stop == Stop::CONVERGED ? Polish_stop::CONVERGED
+             : r.stop == Stop::ITERATION_CAP ? Polish_stop::ITERATION_CAP
+             : r.stop == Stop::TIME_BUDGET ? Polish_stop::TIME_BUDGET
+             : r.stop == Stop::VISITOR ? Polish_stop::VISITOR : Polish_stop::NO_PROGRESS;
+    pol.iterations = r.iterations;
+    pol.l2_before = r.l2_before;
+    pol.l2_after = r.l2_after;
+    if(settings.free_border)
+      fit_in_unit_square(uv);
+  }
+
+  // A fixed polygonal border flattens an ear (a face whose middle vertex has no other face)
+  // lying along one side; the free polish needs every face positive: move such a middle vertex
+  // off the side, outwards, by a tenth of the ear's width. Its only face is the ear, so no other
+  // face changes.
+  static void open_flat_ears(const internal::Disk_component<Triangle_mesh>& dc, std::vector<internal::Vec2>& uv)
+  {
+    std::vector<int> faces_of(dc.flat.xyz.size(), 0);
+    for(const internal::Triangle& t : dc.flat.tri)
+      for(int v : t)
+        ++faces_of[v];
+    auto signed_area = [&uv](const internal::Triangle& t) {
+      const internal::Vec2 &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
+      return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+    };
+    double total = 0.;
+    for(const internal::Triangle& t : dc.flat.tri)
+      total += signed_area(t);
+    const double orientation = total >= 0. ? 1. : -1.;
+    for(const internal::Triangle& t : dc.flat.tri) {
+      const double a = signed_area(t);
+      const double width = std::hypot(uv[t[1]][0] - uv[t[0]][0], uv[t[1]][1] - uv[t[0]][1]) +
+                           std::hypot(uv[t[2]][0] - uv[t[1]][0], uv[t[2]][1] - uv[t[1]][1]);
+      if(orientation * a > 1e-12 * width * width)
+        continue;
+      for(int k = 0; k < 3; ++k) {
+        const int v = t[k], p = t[(k + 2) % 3], n = t[(k + 1) % 3];
+        if(faces_of[v] != 1 || dc.row[v] != -1)
+          continue;
+        // the normal of the side (p, n) on the side that gives the face the mesh's orientation
+        const double dx = uv[n][0] - uv[p][0], dy = uv[n][1] - uv[p][1];
+        const internal::Vec2 normal = {dy * orientation, -dx * orientation};
+        uv[v] = {uv[v][0] + 0.1 * normal[0], uv[v][1] + 0.1 * normal[1]};
+        break;
+      }
+    }
+  }
+
+  // A free border leaves the map at any place and scale: move it into the unit square, keeping
+  // its proportions, as the fixed borders are.
+  static void fit_in_unit_square(std::vector<internal::Vec2>& uv)
+  {
+    internal::Vec2 lo = uv.front(), hi = uv.front();
+    for(const internal::Vec2& p : uv)
+      for(int k = 0; k < 2; ++k) {
+        lo[k] = (std::min)(lo[k], p[k]);
+        hi[k] = (std::max)(hi[k], p[k]);
+      }
+    const double extent = (std::max)(hi[0] - lo[0], hi[1] - lo[1]);
+    if(!(extent > 0.))
+      return;
+    for(internal::Vec2& p : uv)
+      p = {(p[0] - lo[0]) / extent, (p[1] - lo[1]) / extent};
+  }
+
+  // w^0 in the ring order of `dc`: the initializer's, or computed on the flat rings; around a
+  // closed hole, where the initializer cannot see the virtual faces, always on the flat ring
+  // (shape-preserving weights, unless other start weights are asked for)
   bool initial_weights(const Triangle_mesh& mesh, const internal::Disk_component<Triangle_mesh>& dc,
-                       std::vector<double>& w)
+                       Start_weights kind, std::vector<double>& w)
   {
     w.resize(dc.ring.size());
     internal::Shape_preserving_ring_weights floater;
@@ -416,11 +555,17 @@ private:
     std::vector<double> ring_w;
     for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
       const int first = dc.ring_begin[r], last = dc.ring_begin[r + 1];
-      if(dc.flat_ring[r]) {
+      if(dc.flat_ring[r] || kind != Start_weights::INITIALIZER) {
         ring.clear();
         for(int e = first; e < last; ++e)
           ring.push_back(dc.flat.xyz[dc.ring[e]]);
-        if(!floater.compute(dc.flat.xyz[dc.interior[r]], ring, ring_w))
+        const internal::Vec3& center = dc.flat.xyz[dc.interior[r]];
+        const bool ok = kind == Start_weights::MEAN_VALUE
+                          ? internal::mean_value_ring_weights(center, ring, ring_w)
+                          : kind == Start_weights::CLAMPED_COTANGENT
+                              ? internal::clamped_cotangent_ring_weights(center, ring, ring_w)
+                              : floater.compute(center, ring, ring_w);
+        if(!ok)
           return false;
         std::copy(ring_w.begin(), ring_w.end(), w.begin() + first);
         continue;
@@ -446,10 +591,7 @@ private:
 
   internal::Exposed_initializer<Initial_parameterizer> m_initializer;
   Solver_traits m_solver_traits;
-  double m_eta = 1.;
-  unsigned int m_max_iterations = default_number_of_iterations;
-  bool m_verbose = false;
-  internal::Step_visitor m_visitor;
+  internal::Stretch_minimizing_settings m_settings;
   std::shared_ptr<Stretch_minimizing_report> m_report; // shared by copies, see the class comment
 };
 

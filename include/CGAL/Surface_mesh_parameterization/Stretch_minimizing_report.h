@@ -20,11 +20,13 @@ namespace Surface_mesh_parameterization {
 struct Stretch_minimizing_step
 {
   std::size_t step = 0;                ///< h: 0 for the initial parameterization U^0
+  double eta = 0.;                     ///< the exponent of the update that gave U^h (0 for U^0)
   double l2_stretch = 0.;              ///< normalized L2 stretch of U^h
   double linf_stretch = 0.;            ///< normalized Linf stretch of U^h
   std::size_t flipped_faces = 0;       ///< faces oriented against the others
   std::size_t degenerate_uv_faces = 0; ///< faces of zero parameter area (e.g. border ears)
   double seconds = 0.;                 ///< wall time since the start of the call
+  bool polish = false;                 ///< a step of the polish stage (`step` counts from 1 there)
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -32,10 +34,40 @@ struct Stretch_minimizing_step
 enum class Stretch_minimizing_stop
 {
   NOT_RUN,            ///< no parameterization computed (see `Stretch_minimizing_report::status`)
-  STRETCH_INCREASED,  ///< the paper's rule: \f$ E(U^{h+1}) \ge E(U^h) \f$
+  STRETCH_INCREASED,  ///< the paper's rule: \f$ E(U^{h+1}) \ge E(U^h) \f$ (with `Step_rule::HALVE_ETA`: even with the smallest \f$ \eta \f$)
   ITERATION_CAP,      ///< `number_of_iterations` steps were taken
   VISITOR,            ///< the visitor asked to stop
   FLIPPED_FACES       ///< a step produced flipped faces (possible with a non-convex border only)
+};
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+/// Why the polish stage ended.
+enum class Polish_stop
+{
+  NOT_RUN,        ///< no polish was asked for, or it could not start (see `Stretch_minimizing_polish::message`)
+  CONVERGED,      ///< a step lowered the energy by less than a relative \f$ 10^{-7} \f$
+  ITERATION_CAP,  ///< `polish_iterations` steps were taken
+  TIME_BUDGET,    ///< `polish_time_budget` ran out
+  VISITOR,        ///< the visitor asked to stop
+  NO_PROGRESS     ///< the line search found no step that lowers the energy
+};
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+/// What the polish stage did: a projected Newton descent of Sander's L2 stretch energy from
+/// \f$ U^{opt} \f$, with the border fixed or free.
+struct Stretch_minimizing_polish
+{
+  Polish_stop stop = Polish_stop::NOT_RUN;       ///< why it ended
+  std::string message;                           ///< why it could not start, if so
+  bool free_border = false;                      ///< the border moved
+  std::size_t iterations = 0;                    ///< Newton steps taken
+  double l2_before = 0.;                         ///< normalized L2 stretch of \f$ U^{opt} \f$
+  double l2_after = 0.;                          ///< normalized L2 stretch of the map written
+  double seconds = 0.;                           ///< wall time of the polish
+  std::vector<Stretch_minimizing_step> history;  ///< one entry per step (`step` counts them from 1)
+
+  /// Whether the polish ran and its result was written.
+  bool ran() const { return stop != Polish_stop::NOT_RUN; }
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -53,12 +85,16 @@ struct Stretch_minimizing_report
   std::size_t border_vertices = 0;                  ///< vertices fixed by the border parameterizer
   std::size_t faces = 0;                            ///< faces of the parameterized component
   std::size_t holes_closed = 0;                     ///< inner boundaries closed virtually
+  Stretch_minimizing_polish polish;                 ///< the polish stage, if asked for
 
   /// Number of reweighting steps computed (the size of the history less U^0).
   std::size_t steps_taken() const { return history.empty() ? 0 : history.size() - 1; }
 
-  /// The step that was written to the uv map.
+  /// The step \f$ U^{opt} \f$ of the reweighting; it is the map written unless the polish ran.
   const Stretch_minimizing_step& kept() const { return history.at(kept_step); }
+
+  /// The normalized L2 stretch of the map written.
+  double l2_stretch() const { return polish.ran() ? polish.l2_after : kept().l2_stretch; }
 };
 
 } // namespace Surface_mesh_parameterization

@@ -12,32 +12,68 @@ namespace Surface_mesh_parameterization {
 // The package's own tags live here, never in CGAL::internal_np.
 namespace internal_np {
 enum eta_t { eta };
+enum start_weights_t { start_weights };
+enum stretch_update_t { stretch_update };
+enum step_rule_t { step_rule };
+enum preset_t { preset };
+enum polish_iterations_t { polish_iterations };
+enum polish_time_budget_t { polish_time_budget };
+enum free_border_t { free_border };
 } // namespace internal_np
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
-/// Named parameters of this package. CGAL's own named parameters are re-exported, so that a
-/// chain may start with a package name and go on with CGAL's:
+/// Named parameters of this package. CGAL's own named parameters are re-exported. CGAL's chain
+/// syntax `a(x).b(y)` only knows CGAL's names, so a package name takes the rest of the chain as
+/// its second argument: `SMP::parameters::eta(0.5, SMP::parameters::step_rule(SMP::Step_rule::HALVE_ETA,
+/// CGAL::parameters::number_of_iterations(10)))`, or starts a chain of CGAL names:
 /// `SMP::parameters::eta(0.5).number_of_iterations(10)`.
 namespace parameters {
 
 using namespace CGAL::parameters;
 
-/// Exponent \f$ \eta \f$ of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$,
-/// in \f$ (0, 1] \f$.
-template <typename T>
-Named_function_parameters<T, internal_np::eta_t> eta(const T& value)
-{
-  return Named_function_parameters<T, internal_np::eta_t>(value);
-}
+#ifndef DOXYGEN_RUNNING
+#define CGAL_SMP_ADD_NAMED_PARAMETER(NAME)                                                        \
+  template <typename T>                                                                           \
+  Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)                        \
+  {                                                                                               \
+    return Named_function_parameters<T, internal_np::NAME##_t>(value);                            \
+  }                                                                                               \
+  template <typename T, typename T2, typename Tag2, typename Base2>                               \
+  Named_function_parameters<T, internal_np::NAME##_t, Named_function_parameters<T2, Tag2, Base2> > \
+  NAME(const T& value, const Named_function_parameters<T2, Tag2, Base2>& np)                      \
+  {                                                                                               \
+    return Named_function_parameters<T, internal_np::NAME##_t,                                    \
+                                     Named_function_parameters<T2, Tag2, Base2> >(value, np);     \
+  }
 
-/// Chains `eta` onto existing named parameters, e.g. CGAL's:
-/// `SMP::parameters::eta(0.5, CGAL::parameters::number_of_iterations(10))`.
-template <typename T, typename T2, typename Tag2, typename Base2>
-Named_function_parameters<T, internal_np::eta_t, Named_function_parameters<T2, Tag2, Base2> >
-eta(const T& value, const Named_function_parameters<T2, Tag2, Base2>& np)
-{
-  return Named_function_parameters<T, internal_np::eta_t, Named_function_parameters<T2, Tag2, Base2> >(value, np);
-}
+CGAL_SMP_ADD_NAMED_PARAMETER(eta)
+CGAL_SMP_ADD_NAMED_PARAMETER(start_weights)
+CGAL_SMP_ADD_NAMED_PARAMETER(stretch_update)
+CGAL_SMP_ADD_NAMED_PARAMETER(step_rule)
+CGAL_SMP_ADD_NAMED_PARAMETER(preset)
+CGAL_SMP_ADD_NAMED_PARAMETER(polish_iterations)
+CGAL_SMP_ADD_NAMED_PARAMETER(polish_time_budget)
+CGAL_SMP_ADD_NAMED_PARAMETER(free_border)
+#undef CGAL_SMP_ADD_NAMED_PARAMETER
+#else
+/// Exponent \f$ \eta \f$ of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$, in \f$ (0, 1] \f$.
+template <typename T> unspecified_type eta(const T& value);
+/// The weights of \f$ U^0 \f$: a `Start_weights`.
+template <typename T> unspecified_type start_weights(const T& value);
+/// The stretch that divides the weights: a `Stretch_update`.
+template <typename T> unspecified_type stretch_update(const T& value);
+/// What to do when a step does not decrease the stretch: a `Step_rule`.
+template <typename T> unspecified_type step_rule(const T& value);
+/// A set of options: a `Stretch_minimizing_preset`.
+template <typename T> unspecified_type preset(const T& value);
+/// Cap on the iterations of the polish stage (0: no polish).
+template <typename T> unspecified_type polish_iterations(const T& value);
+/// Time budget of the polish stage in seconds (0: none).
+template <typename T> unspecified_type polish_time_budget(const T& value);
+/// If `true`, the polish stage frees the border.
+template <typename T> unspecified_type free_border(const T& value);
+/// Each function above also takes named parameters as a second argument and puts itself in front of them.
+#endif
 
 } // namespace parameters
 } // namespace Surface_mesh_parameterization

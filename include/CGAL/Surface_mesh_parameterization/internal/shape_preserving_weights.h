@@ -27,6 +27,33 @@ inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
 // Angle between a and b in [0, pi]; atan2 stays accurate near 0 and pi, where acos does not.
 inline double angle3(const Vec3& a, const Vec3& b) { return std::atan2(norm3(cross3(a, b)), dot3(a, b)); }
 
+// Floater's (2003) mean-value weights of the ring (neighbours in cyclic order), normalized to
+// sum 1. False for a zero-length or non-finite spoke.
+inline bool mean_value_ring_weights(const Vec3& center, const std::vector<Vec3>& ring,
+                                    std::vector<double>& weights)
+{
+  const std::size_t d = ring.size();
+  weights.assign(d, 0.);
+  if(d < 3)
+    return false;
+  std::vector<double> half_tan(d);
+  for(std::size_t k = 0; k < d; ++k)
+    half_tan[k] = std::tan(angle3(sub3(ring[k], center), sub3(ring[(k + 1) % d], center)) / 2.);
+  double sum = 0.;
+  for(std::size_t k = 0; k < d; ++k) {
+    const double r = norm3(sub3(ring[k], center));
+    if(!(r > 0.) || !std::isfinite(r))
+      return false;
+    weights[k] = (half_tan[(k + d - 1) % d] + half_tan[k]) / r;
+    sum += weights[k];
+  }
+  if(!(sum > 0.) || !std::isfinite(sum))
+    return false;
+  for(double& w : weights)
+    w /= sum;
+  return true;
+}
+
 // Floater's (1997) shape-preserving weights of an interior vertex, computed for its whole
 // one-ring at once.
 //
@@ -72,7 +99,7 @@ public:
     for(double a : m_angle)
       max_scaled = (std::max)(max_scaled, a * scale);
     if(max_scaled > pi * (1. + 1e-9))
-      return mean_value(weights);
+      return mean_value_ring_weights(center, ring, weights);
 
     // polar map q_k = r_k (cos theta_k, sin theta_k), theta increasing from 0
     m_theta.resize(d);
@@ -129,23 +156,6 @@ private:
     weights[k] += la / sum;
     weights[r] += lb / sum;
     weights[s] += lc / sum;
-  }
-
-  // Floater's (2003) mean-value weights from the same spokes and angles, normalized.
-  bool mean_value(std::vector<double>& weights) const
-  {
-    const std::size_t d = m_radius.size();
-    double sum = 0.;
-    for(std::size_t k = 0; k < d; ++k) {
-      const double before = m_angle[(k + d - 1) % d], after = m_angle[k];
-      weights[k] = (std::tan(before / 2.) + std::tan(after / 2.)) / m_radius[k];
-      sum += weights[k];
-    }
-    if(!(sum > 0.) || !std::isfinite(sum))
-      return false;
-    for(double& w : weights)
-      w /= sum;
-    return true;
   }
 
   std::vector<double> m_radius, m_angle, m_theta;

@@ -1,0 +1,653 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_SANDER_ENERGY_POLISHER_H
+#define CGAL_SMP_INTERNAL_SANDER_ENERGY_POLISHER_H
+
+// Minimizes the L2 stretch energy of Sander, Snyder, Gortler and Hoppe (2001),
+//   E(uv) = sum_T A3(T) (a + c) / 2 = sum_T A3(T) ||J_T^-1||_F^2 / 2,
+// by projected Newton from a flip-free parameterization, keeping it flip-free. J_T is the
+// Jacobian of the affine map from the face's 3D triangle (in a 2D frame of its plane) to its uv
+// triangle; ||J^-1||_F^2 = ||J||_F^2 / det(J)^2 = 1 / s1^2 + 1 / s2^2.
+//
+// With a fixed border the uv area is constant, so E is the normalized L2 stretch up to a
+// constant factor. With a free border E only shrinks as the map grows; the normalized L2
+// stretch is scale invariant and is minimized through G = E + mu * (uv area), mu = E0 / A0
+// fixed at the start: the start scale is then optimal in scale, and G < G0 implies
+// E * A < E0 * A0 (AM-GM). The border loop is kept simple, which with flip-free faces makes the
+// map of a disk bijective.
+//
+// What it does not do: it does not change the connectivity, it does not move a vertex that is in
+// no energy face (e.g. the centre of a fan closing a hole), and it stops at a local minimum.
+
+#include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// ---------------------------------------------------------------------------------------------
+// One face
+
+// The linear map from the uv corners of a face to its Jacobian, J = [q1 q2 q3] * D (2x3 times
+// 3x2): the rows of D are the gradients of the barycentric coordinates in a 2D frame of the 3D
+// triangle. `area` is the 3D area.
+struct Sander_face_operator
+{
+  Eigen::Matrix<double, 3, 2> D;
+  double area = 0.;
+};
+
+inline Sander_face_operator sander_face_operator(const Vec3& p1, const Vec3& p2, const Vec3& p3)
+{
+  // frame: p1 at the origin, p2 on the x axis, p3 above it
+  const Vec3 e1 = sub3(p2, p1), e2 = sub3(p3, p1);
+  const double l = norm3(e1);
+  const double x3 = dot3(e1, e2) / l, y3 = norm3(cross3(e1, e2)) / l;
+  Eigen::Matrix2d M; // inverse of the edge matrix [[l, x3], [0, y3]]
+  M << 1. / l, -x3 / (l * y3),
+       0.,      1. / y3;
+  Sander_face_operator op;
+  op.D.row(0) = -(M.row(0) + M.row(1));
+  op.D.row(1) = M.row(0);
+  op.D.row(2) = M.row(1);
+  op.area = 0.5 * l * y3;
+  return op;
+}
+
+// f(J) = area / 2 * ||J||_F^2 / det(J)^2 + mu * area * det(J), the energy of one face, with its
+// gradient and Hessian with respect to vec(J) = (J00, J01, J10, J11) when asked.
+// \pre det(J) > 0
+inline double sander_face_energy(const Eigen::Matrix2d& J, double area, double mu,
+                                 Eigen::Vector4d* gradient = nullptr, Eigen::Matrix4d* hessian = nullptr)
+{
+  const Eigen::Vector4d j(J(0, 0), J(0, 1), J(1, 0), J(1, 1));
+  const Eigen::Vector4d c(J(1, 1), -J(1, 0), -J(0, 1), J(0, 0)); // d det / d vec(J): cofactors
+  const double n = j.squaredNorm();
+  const double d = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
+  const double h = 0.5 * area, id = 1. / d, hid2 = h * id * id;
+  if(gradient)
+    *gradient = hid2 * (2. * j - (2. * n * id) * c) + (mu * area) * c;
+  if(hessian) {
+    Eigen::Matrix4d& H = *hessian;
+    H.noalias() = (6. * n * id * id) * (c * c.transpose()) - (4. * id) * (j * c.transpose() + c * j.transpose());
+    H.diagonal().array() += 2.;
+    H *= hid2;
+    // the Hessian of det is constant: 1 at (0, 3), -1 at (1, 2), symmetric
+    const double k = mu * area - 2. * n * id * hid2;
+    H(0, 3) += k; H(3, 0) += k;
+    H(1, 2) -= k; H(2, 1) -= k;
+  }
+  return hid2 * n + mu * area * d;
+}
+
+// The Hessian of sander_face_energy() with its eigenvalues clamped from below to `ratio`
+// times the largest one, so that every face contributes a convex quadratic model.
+//
+// f depends on the singular values of J = s1 u1 v1^T + s2 u2 v2^T only (s1 s2 = det J > 0):
+// f = area / 2 (1 / s1^2 + 1 / s2^2) + mu area s1 s2. Its Hessian then has the eigenvectors
+// (u2 v1^T - u1 v2^T) / sqrt 2 (twist), (u2 v1^T + u1 v2^T) / sqrt 2 (flip) and two
+// combinations of u1 v1^T and u2 v2^T given by the 2x2 Hessian of f in (s1, s2); the twist
+// eigenvalue is negative (rotating a face shrinks its stretch), which is what the clamp removes.
+// \pre det(J) > 0
+inline Eigen::Matrix4d sander_face_projected_hessian(const Eigen::Matrix2d& J, double area, double mu, double ratio)
+{
+  // right singular vectors: the eigenvectors of J^T J
+  const Eigen::Matrix2d JtJ = J.transpose() * J;
+  const double theta = 0.5 * std::atan2(2. * JtJ(0, 1), JtJ(0, 0) - JtJ(1, 1));
+  const Eigen::Vector2d v1(std::cos(theta), std::sin(theta)), v2(-v1(1), v1(0));
+  const double d = J.determinant(), n = JtJ.trace();
+  const double half_gap = 0.5 * (JtJ(0, 0) - JtJ(1, 1));
+  const double s1 = std::sqrt(0.5 * n + std::sqrt(half_gap * half_gap + JtJ(0, 1) * JtJ(0, 1)));
+  const double s2 = d / s1; // accurate where s2^2 from the eigenvalues would cancel
+  const Eigen::Vector2d u1 = J * v1 / s1, u2 = J * v2 / s2;
+  auto vec = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { // vec(a b^T), row-major
+    return Eigen::Vector4d(a(0) * b(0), a(0) * b(1), a(1) * b(0), a(1) * b(1));
+  };
+  const Eigen::Vector4d d1 = vec(u1, v1), d2 = vec(u2, v2);
+  const Eigen::Vector4d twist = (vec(u2, v1) - vec(u1, v2)) / std::sqrt(2.);
+  const Eigen::Vector4d flip = (vec(u2, v1) + vec(u1, v2)) / std::sqrt(2.);
+
+  const double h = 0.5 * area, id = 1. / d;
+  Eigen::Matrix2d S; // Hessian in (s1, s2)
+  S << 6. * h / (s1 * s1 * s1 * s1), mu * area,
+       mu * area,                    6. * h / (s2 * s2 * s2 * s2);
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
+  es.computeDirect(S);
+  const double l_twist = 2. * h * id * id * (1. - n * id) + mu * area;
+  const double l_flip = 2. * h * id * id * (1. + n * id) - mu * area;
+
+  const double largest = (std::max)({es.eigenvalues()(1), l_twist, l_flip});
+  const double floor = ratio * (std::max)(largest, (std::numeric_limits<double>::min)());
+  Eigen::Matrix4d H;
+  Eigen::Vector4d e;
+  H.noalias() = (std::max)(l_twist, floor) * (twist * twist.transpose());
+  H.noalias() += (std::max)(l_flip, floor) * (flip * flip.transpose());
+  for(int k = 0; k < 2; ++k) {
+    e = es.eigenvectors()(0, k) * d1 + es.eigenvectors()(1, k) * d2;
+    H.noalias() += (std::max)(es.eigenvalues()(k), floor) * (e * e.transpose());
+  }
+  return H;
+}
+
+// ---------------------------------------------------------------------------------------------
+// The polisher
+
+struct Sander_polish_settings
+{
+  unsigned int max_iterations = 200;
+  double time_budget = 0.;    // seconds, checked before each step; <= 0: none
+  bool free_border = false;   // let the outer border move (the vertices of `border`)
+  double tolerance = 1e-6;    // converged when a step lowers the energy by less than this, relatively
+};
+
+// What a visitor sees after every Newton step.
+struct Sander_polish_step
+{
+  std::size_t iteration = 0;               // 1 after the first step
+  double l2_stretch = 0.;                  // normalized, by Flat_stretch
+  double energy = 0.;                      // the objective (G with a free border)
+  double seconds = 0.;                     // since the start of the call
+  const std::vector<Vec2>* uv = nullptr;   // the current map, valid during the call only
+};
+
+typedef std::function<bool(const Sander_polish_step&)> Sander_polish_visitor;
+
+// BAD_START: inconsistent arrays, or a face that is flipped or flat at the start (or, with a
+// free border, a border loop that is not simple).
+enum class Sander_polish_status { OK, BAD_START, SOLVER_FAILED };
+
+// CONVERGED: the last step, or the one the Newton model predicts, lowers the energy by less than
+// the tolerance; NO_PROGRESS: the line search found no step that lowers it.
+enum class Sander_polish_stop { NOT_RUN, CONVERGED, ITERATION_CAP, TIME_BUDGET, VISITOR, NO_PROGRESS };
+
+struct Sander_polish_result
+{
+  Sander_polish_status status = Sander_polish_status::OK;
+  Sander_polish_stop stop = Sander_polish_stop::NOT_RUN;
+  std::string message;                     // why, when status is not OK
+  std::size_t iterations = 0;              // steps taken
+  double energy_before = 0., energy_after = 0.;  // objective over the faces that can move
+  double l2_before = 0., l2_after = 0.;    // normalized L2 stretch of all faces (Flat_stretch)
+  double seconds = 0.;
+};
+
+// CHOLMOD's supernodal LLT (Eigen's CholmodSupport) took 1.2 times, its simplicial LDLT 1.4
+// times the factorization time of SimplicialLDLT on the mannequin head's Newton system
+// (26k unknowns), so there is no SuiteSparse variant.
+typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_polish_default_solver;
+
+// `Solver`: an Eigen sparse Cholesky solver reading the lower triangle.
+template <typename Solver = Sander_polish_default_solver>
+class Sander_energy_polisher
+{
+public:
+  // Relative eigenvalue floor of the per-face Hessians.
+  static constexpr double eigenvalue_floor = 1e-8;
+
+  // Polishes `uv` (one entry per vertex of `m.xyz`) in place.
+  // - energy faces: `m.tri`; those degenerate in 3D only have to stay positively oriented;
+  // - `guard`: faces that only have to stay positively oriented (e.g. fans closing holes);
+  // - `fixed`: per vertex, vertices that do not move (outer border vertices move with a free border);
+  // - `border`: the outer border loop, in order; read with a free border only.
+  // The start must be flip-free: every face with a free vertex has to be oriented like the total
+  // signed uv area; faces whose vertices are all fixed are skipped (a negative one is an error).
+  // On a status other than OK, `uv` is unchanged.
+  Sander_polish_result polish(const Flat_triangles& m, const std::vector<Triangle>& guard,
+                              const std::vector<char>& fixed, const std::vector<int>& border,
+                              std::vector<Vec2>& uv, const Sander_polish_settings& settings = Sander_polish_settings(),
+                              const Sander_polish_visitor& visitor = Sander_polish_visitor())
+  {
+    const auto start = std::chrono::steady_clock::now();
+    auto seconds = [&start]() {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    Sander_polish_result r;
+    auto fail = [&](Sander_polish_status s, const std::string& why) {
+      r.status = s;
+      r.message = why;
+      r.seconds = seconds();
+      return r;
+    };
+
+    std::string why;
+    if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
+      return fail(Sander_polish_status::BAD_START, why);
+    r.l2_before = r.l2_after = m_stretch.evaluate(m, uv).l2;
+
+    m_mu = 0.;
+    double E = energy_at(0.);
+    if(settings.free_border) {
+      // mu = E0 / A0: the start is stationary in scale
+      m_mu = E / m_area_uv;
+      E *= 2.;
+    }
+    r.energy_before = r.energy_after = E;
+    if(m_dofs == 0) {
+      r.stop = Sander_polish_stop::CONVERGED;
+      r.seconds = seconds();
+      return r;
+    }
+
+    bool factored = false;
+    for(;;) {
+      if(r.iterations >= settings.max_iterations) { r.stop = Sander_polish_stop::ITERATION_CAP; break; }
+      if(settings.time_budget > 0. && seconds() >= settings.time_budget) {
+        r.stop = Sander_polish_stop::TIME_BUDGET;
+        break;
+      }
+
+      assemble();
+      if(!factored) {
+        m_solver.analyzePattern(m_H);
+        factored = true;
+      }
+      m_solver.factorize(m_H);
+      if(m_solver.info() != Eigen::Success)
+        return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the Newton system failed");
+      m_p = m_solver.solve(m_g);
+      if(m_solver.info() != Eigen::Success || !m_p.allFinite())
+        return fail(Sander_polish_status::SOLVER_FAILED, "the Newton system could not be solved");
+      m_p = -m_p;
+      const double slope = m_g.dot(m_p);
+      if(!(-slope > 2. * settings.tolerance * E)) { // predicted decrease below the tolerance
+        r.stop = Sander_polish_stop::CONVERGED;
+        break;
+      }
+      for(std::size_t v = 0; v < m_dof.size(); ++v)
+        if(m_dof[v] >= 0)
+          m_dir[v] = {m_p(2 * m_dof[v]), m_p(2 * m_dof[v] + 1)};
+
+      const double E_new = line_search(E, slope, settings.free_border);
+      if(!(E_new < E)) { r.stop = Sander_polish_stop::NO_PROGRESS; break; }
+      m_x.swap(m_trial);
+      const double decrease = E - E_new;
+      E = E_new;
+      ++r.iterations;
+
+      bool go_on = true;
+      if(visitor) {
+        write(m_current);
+        Sander_polish_step s;
+        s.iteration = r.iterations;
+        s.l2_stretch = m_stretch.evaluate(m, m_current).l2;
+        s.energy = E;
+        s.seconds = seconds();
+        s.uv = &m_current;
+        go_on = visitor(s);
+      }
+      if(decrease <= settings.tolerance * E) { r.stop = Sander_polish_stop::CONVERGED; break; }
+      if(!go_on) { r.stop = Sander_polish_stop::VISITOR; break; }
+    }
+
+    if(E < r.energy_before) {
+      write(uv);
+      r.energy_after = E;
+      r.l2_after = m_stretch.evaluate(m, uv).l2;
+    }
+    r.seconds = seconds();
+    return r;
+  }
+
+private:
+  struct Energy_face
+  {
+    Triangle v;
+    Eigen::Matrix<double, 3, 2> D;
+    double area;
+  };
+
+  // Checks the start, classifies the faces, numbers the unknowns and builds the sparse pattern.
+  bool setup(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<char>& fixed,
+             const std::vector<int>& border, const std::vector<Vec2>& uv, bool free_border, std::string& why)
+  {
+    const std::size_t nv = m.xyz.size();
+    auto valid = [nv](const Triangle& t) {
+      for(int v : t)
+        if(v < 0 || std::size_t(v) >= nv) return false;
+      return true;
+    };
+    auto refuse = [&why](const char* message) {
+      why = message;
+      return false;
+    };
+    if(fixed.size() != nv || uv.size() != nv)
+      return refuse("fixed and uv need one entry per vertex");
+    for(const Triangle& t : m.tri)
+      if(!valid(t)) return refuse("a face has a vertex index out of range");
+    for(const Triangle& t : guard)
+      if(!valid(t)) return refuse("a guard face has a vertex index out of range");
+    for(int v : border)
+      if(v < 0 || std::size_t(v) >= nv) return refuse("a border vertex index is out of range");
+    if(free_border && border.size() < 3)
+      return refuse("a free border needs a border loop");
+    for(const Vec2& q : uv)
+      if(!std::isfinite(q[0]) || !std::isfinite(q[1])) return refuse("a uv coordinate is not finite");
+    for(const Vec3& p : m.xyz)
+      if(!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+        return refuse("a vertex position is not finite");
+
+    // positive: the orientation of the total signed uv area
+    double signed_area = 0.;
+    for(const Triangle& t : m.tri)
+      signed_area += cross(uv[t[0]], uv[t[1]], uv[t[2]]);
+    if(!(signed_area != 0.))
+      return refuse("the start has no uv area");
+
+    // A free border frees the outer loop, except the corners of faces of fixed vertices and
+    // zero uv area (an ear flattened on a side of the square): such a face cannot carry energy.
+    m_fixed.assign(fixed.begin(), fixed.end());
+    if(free_border) {
+      std::vector<char> keep_fixed(nv, 0);
+      for(const Triangle& t : m.tri)
+        if(fixed[t[0]] && fixed[t[1]] && fixed[t[2]] && cross(uv[t[0]], uv[t[1]], uv[t[2]]) == 0.)
+          for(int v : t) keep_fixed[v] = 1;
+      for(int v : border)
+        if(!keep_fixed[v]) m_fixed[v] = 0;
+    }
+    m_flip = signed_area < 0.;
+    m_x.resize(nv);
+    for(std::size_t v = 0; v < nv; ++v)
+      m_x[v] = {uv[v][0], m_flip ? -uv[v][1] : uv[v][1]};
+
+    double area_3d = 0.;
+    for(const Triangle& t : m.tri)
+      area_3d += 0.5 * norm3(cross3(sub3(m.xyz[t[1]], m.xyz[t[0]]), sub3(m.xyz[t[2]], m.xyz[t[0]])));
+    const double tol3 = Flat_stretch::degenerate_ratio * area_3d / double((std::max)(m.tri.size(), std::size_t(1)));
+
+    m_energy.clear();
+    m_guard.clear();
+    m_area_uv = 0.;
+    std::vector<char> in_energy(nv, 0);
+    auto keep = [&](const Triangle& t) { // false for a bad start
+      const bool all_fixed = m_fixed[t[0]] && m_fixed[t[1]] && m_fixed[t[2]];
+      const double a = cross(m_x[t[0]], m_x[t[1]], m_x[t[2]]);
+      return all_fixed ? a >= 0. : a > 0.;
+    };
+    for(const Triangle& t : m.tri) {
+      if(!keep(t))
+        return refuse("the start has a flipped or degenerate face");
+      if(m_fixed[t[0]] && m_fixed[t[1]] && m_fixed[t[2]]) continue;
+      const Sander_face_operator op = sander_face_operator(m.xyz[t[0]], m.xyz[t[1]], m.xyz[t[2]]);
+      if(!(op.area > tol3) || !op.D.allFinite()) {
+        m_guard.push_back(t);
+        continue;
+      }
+      m_energy.push_back(Energy_face{t, op.D, op.area});
+      m_area_uv += 0.5 * cross(m_x[t[0]], m_x[t[1]], m_x[t[2]]);
+      for(int v : t) in_energy[v] = 1;
+    }
+    for(const Triangle& t : guard) {
+      if(!keep(t))
+        return refuse("the start has a flipped or degenerate guard face");
+      if(!(m_fixed[t[0]] && m_fixed[t[1]] && m_fixed[t[2]]))
+        m_guard.push_back(t);
+    }
+
+    m_border.clear();
+    if(free_border) {
+      m_border.assign(border.begin(), border.end());
+      m_trial = m_x;
+      if(!border_is_simple())
+        return refuse("the border loop of the start is not simple");
+    }
+
+    // unknowns: free vertices of energy faces; with a free border, translation is pinned at
+    // a border vertex unless a fixed vertex already holds the map in place
+    int pinned = -1;
+    if(free_border) {
+      bool anchored = false;
+      for(std::size_t v = 0; v < nv && !anchored; ++v)
+        anchored = in_energy[v] && m_fixed[v];
+      for(std::size_t k = 0; k < border.size() && !anchored && pinned < 0; ++k)
+        if(in_energy[border[k]]) pinned = border[k];
+    }
+    m_dof.assign(nv, -1);
+    m_dofs = 0;
+    for(std::size_t v = 0; v < nv; ++v)
+      if(in_energy[v] && !m_fixed[v] && int(v) != pinned)
+        m_dof[v] = int(m_dofs++);
+    m_dir.assign(nv, Vec2{0., 0.});
+    m_trial = m_x;
+    if(m_dofs == 0)
+      return true;
+
+    // lower triangle of the Hessian; every face keeps where its 6x6 block goes
+    std::vector<Eigen::Triplet<double> > entries;
+    entries.reserve(m_energy.size() * 21);
+    for(const Energy_face& f : m_energy)
+      for(int a = 0; a < 6; ++a)
+        for(int b = 0; b < 6; ++b) {
+          const int i = index(f.v[a / 2], a % 2), j = index(f.v[b / 2], b % 2);
+          if(i >= 0 && j >= 0 && i >= j)
+            entries.emplace_back(i, j, 0.);
+        }
+    const Eigen::Index n = Eigen::Index(2 * m_dofs);
+    m_H.resize(n, n);
+    m_H.setFromTriplets(entries.begin(), entries.end());
+    m_H.makeCompressed();
+    m_slot.assign(36 * m_energy.size(), -1);
+    for(std::size_t k = 0; k < m_energy.size(); ++k)
+      for(int a = 0; a < 6; ++a)
+        for(int b = 0; b < 6; ++b) {
+          const int i = index(m_energy[k].v[a / 2], a % 2), j = index(m_energy[k].v[b / 2], b % 2);
+          if(i >= 0 && j >= 0 && i >= j) {
+            const int* first = m_H.innerIndexPtr() + m_H.outerIndexPtr()[j];
+            const int* last = m_H.innerIndexPtr() + m_H.outerIndexPtr()[j + 1];
+            m_slot[36 * k + 6 * a + b] = int(std::lower_bound(first, last, i) - m_H.innerIndexPtr());
+          }
+        }
+    m_g.resize(n);
+    m_p.resize(n);
+    return true;
+  }
+
+  // Objective at x + t * dir, written to m_trial; +inf if a face folds.
+  double energy_at(double t)
+  {
+    m_trial_t = t;
+    for(std::size_t v = 0; v < m_x.size(); ++v)
+      m_trial[v] = {m_x[v][0] + t * m_dir[v][0], m_x[v][1] + t * m_dir[v][1]};
+    for(const Triangle& g : m_guard)
+      if(!(cross(m_trial[g[0]], m_trial[g[1]], m_trial[g[2]]) > 0.))
+        return HUGE_VAL;
+    double E = 0.;
+    for(const Energy_face& f : m_energy) {
+      const Eigen::Matrix2d J = jacobian(f, m_trial);
+      if(!(J.determinant() > 0.))
+        return HUGE_VAL;
+      E += sander_face_energy(J, f.area, m_mu);
+    }
+    return E;
+  }
+
+  // Gradient and projected Hessian at x.
+  void assemble()
+  {
+    m_g.setZero();
+    std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
+    Eigen::Vector4d gJ;
+    Eigen::Matrix4d HJ;
+    Eigen::Matrix<double, 4, 6> B;
+    Eigen::Matrix<double, 6, 1> gx;
+    Eigen::Matrix<double, 6, 6> Hx;
+    for(std::size_t k = 0; k < m_energy.size(); ++k) {
+      const Energy_face& f = m_energy[k];
+      const Eigen::Matrix2d J = jacobian(f, m_x);
+      sander_face_energy(J, f.area, m_mu, &gJ);
+      HJ = sander_face_projected_hessian(J, f.area, m_mu, eigenvalue_floor);
+      // vec(J) = B x with x = (u1, v1, u2, v2, u3, v3): J(r, c) = sum_a x(2a + r) D(a, c)
+      B.setZero();
+      for(int a = 0; a < 3; ++a)
+        for(int r = 0; r < 2; ++r)
+          for(int c = 0; c < 2; ++c)
+            B(2 * r + c, 2 * a + r) = f.D(a, c);
+      gx.noalias() = B.transpose() * gJ;
+      Hx.noalias() = B.transpose() * HJ * B;
+      for(int a = 0; a < 6; ++a) {
+        const int i = index(f.v[a / 2], a % 2);
+        if(i < 0) continue;
+        m_g(i) += gx(a);
+        for(int b = 0; b < 6; ++b) {
+          const int s = m_slot[36 * k + 6 * a + b];
+          if(s >= 0) m_H.valuePtr()[s] += Hx(a, b);
+        }
+      }
+    }
+  }
+
+  // Largest t in (0, inf] with every face of a free vertex positively oriented on [0, t).
+  double max_step() const
+  {
+    double t_max = HUGE_VAL;
+    auto limit = [&](const Triangle& t) {
+      const Vec2 e1 = diff(m_x[t[1]], m_x[t[0]]), e2 = diff(m_x[t[2]], m_x[t[0]]);
+      const Vec2 d1 = diff(m_dir[t[1]], m_dir[t[0]]), d2 = diff(m_dir[t[2]], m_dir[t[0]]);
+      // det(t) = a t^2 + b t + c, c > 0
+      const double a = cross2(d1, d2), b = cross2(e1, d2) + cross2(d1, e2), c = cross2(e1, e2);
+      double root = HUGE_VAL;
+      if(a == 0.) {
+        if(b < 0.) root = -c / b;
+      } else {
+        const double disc = b * b - 4. * a * c;
+        if(disc >= 0.) {
+          // both roots without cancellation
+          const double q = -0.5 * (b + (b < 0. ? -1. : 1.) * std::sqrt(disc));
+          const double r1 = q / a, r2 = c / q;
+          if(r1 > 0.) root = (std::min)(root, r1);
+          if(r2 > 0.) root = (std::min)(root, r2);
+        }
+      }
+      t_max = (std::min)(t_max, root);
+    };
+    for(const Energy_face& f : m_energy) limit(f.v);
+    for(const Triangle& g : m_guard) limit(g);
+    return t_max;
+  }
+
+  // Backtracking from min(1, 0.8 t_max) until Armijo holds (and the border stays simple).
+  // A first trial that passes is doubled while the energy keeps falling, within 0.8 t_max:
+  // the clamped twists make the model stiffer than the energy, and the best step is often 2.
+  // Returns the objective at the step taken (left in m_trial), or E if none.
+  double line_search(double E, double slope, bool free_border)
+  {
+    const double t_max = max_step();
+    double t = (std::min)(1., 0.8 * t_max);
+    for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5) {
+      const double E_t = energy_at(t);
+      if(!(E_t < E) || !(E_t <= E + 1e-4 * t * slope))
+        continue;
+      if(free_border && !border_is_simple())
+        continue;
+      if(k > 0)
+        return E_t;
+      double best = E_t, t_best = t;
+      for(double s = 2. * t; s <= 0.8 * t_max && s <= 1e6; s *= 2.) {
+        const double E_s = energy_at(s);
+        if(!(E_s < best) || (free_border && !border_is_simple()))
+          break;
+        best = E_s;
+        t_best = s;
+      }
+      if(m_trial_t != t_best)
+        energy_at(t_best);
+      return best;
+    }
+    return E;
+  }
+
+  // Whether the border loop of m_trial is a simple polygon: candidate pairs of non-adjacent
+  // edges by their boxes, then an exact test (touching counts).
+  bool border_is_simple()
+  {
+    typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+    const std::size_t nb = m_border.size();
+    m_boxes.resize(nb);
+    for(std::size_t i = 0; i < nb; ++i) {
+      const Vec2& p = m_trial[m_border[i]];
+      const Vec2& q = m_trial[m_border[(i + 1) % nb]];
+      m_boxes[i] = Box(Bbox_2((std::min)(p[0], q[0]), (std::min)(p[1], q[1]),
+                              (std::max)(p[0], q[0]), (std::max)(p[1], q[1])), &m_border[i]);
+    }
+    m_boxes_copy.assign(m_boxes.begin(), m_boxes.end());
+    const int* base = m_border.data();
+    bool simple = true;
+    auto check = [&](const Box& a, const Box& b) {
+      if(!simple) return;
+      const std::size_t i = std::size_t(a.handle() - base), j = std::size_t(b.handle() - base);
+      if(i == j || (i + 1) % nb == j || (j + 1) % nb == i) return;
+      auto point = [&](std::size_t e) { const Vec2& p = m_trial[m_border[e % nb]]; return K::Point_2(p[0], p[1]); };
+      if(CGAL::do_intersect(K::Segment_2(point(i), point(i + 1)), K::Segment_2(point(j), point(j + 1))))
+        simple = false;
+    };
+    CGAL::box_intersection_d(m_boxes.begin(), m_boxes.end(), m_boxes_copy.begin(), m_boxes_copy.end(), check,
+                             Box_intersection_d::Box_traits_d<Box>(), 10, Box_intersection_d::CLOSED,
+                             Box_intersection_d::COMPLETE);
+    return simple;
+  }
+
+  // Writes x in the caller's orientation.
+  void write(std::vector<Vec2>& uv) const
+  {
+    uv.resize(m_x.size());
+    for(std::size_t v = 0; v < m_x.size(); ++v)
+      uv[v] = {m_x[v][0], m_flip ? -m_x[v][1] : m_x[v][1]};
+  }
+
+  static Eigen::Matrix2d jacobian(const Energy_face& f, const std::vector<Vec2>& x)
+  {
+    Eigen::Matrix<double, 2, 3> Q;
+    for(int a = 0; a < 3; ++a)
+      Q.col(a) << x[f.v[a]][0], x[f.v[a]][1];
+    return Q * f.D;
+  }
+
+  static Vec2 diff(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
+  static double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
+  static double cross(const Vec2& a, const Vec2& b, const Vec2& c) { return cross2(diff(b, a), diff(c, a)); }
+
+  // Row of coordinate r of vertex v in the system, -1 if it does not move.
+  int index(int v, int r) const { return m_dof[v] < 0 ? -1 : 2 * m_dof[v] + r; }
+
+  typedef Box_intersection_d::Box_with_handle_d<double, 2, const int*, Box_intersection_d::ID_FROM_HANDLE> Box;
+
+  std::vector<char> m_fixed;
+  std::vector<Energy_face> m_energy;
+  std::vector<Triangle> m_guard;           // faces without energy that must stay positive
+  std::vector<int> m_border;
+  std::vector<int> m_dof;                  // vertex -> unknown, -1 if it does not move
+  std::size_t m_dofs = 0;
+  std::vector<int> m_slot;                 // 36 per energy face: entry of m_H, -1 if none
+  std::vector<Vec2> m_x, m_trial, m_dir, m_current;
+  std::vector<Box> m_boxes, m_boxes_copy;
+  bool m_flip = false;                     // uv is mirrored (v -> -v) in m_x so that faces are positive
+  double m_mu = 0., m_area_uv = 0.;
+  double m_trial_t = 0.;                   // m_trial = m_x + m_trial_t * m_dir
+  Eigen::SparseMatrix<double> m_H;
+  Eigen::VectorXd m_g, m_p;
+  Solver m_solver;
+  Flat_stretch m_stretch;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_SANDER_ENERGY_POLISHER_H

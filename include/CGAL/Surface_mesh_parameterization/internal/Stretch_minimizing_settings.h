@@ -1,0 +1,76 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_STRETCH_MINIMIZING_SETTINGS_H
+#define CGAL_SMP_INTERNAL_STRETCH_MINIMIZING_SETTINGS_H
+
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Exposed_initializer.h>
+#include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// Every option of the stretch minimizer, as read from named parameters.
+struct Stretch_minimizing_settings
+{
+  double eta = 1.;
+  unsigned int max_iterations = 20;
+  Start_weights start = Start_weights::INITIALIZER;
+  Stretch_update update = Stretch_update::VERTEX;
+  Step_rule rule = Step_rule::STOP_AT_INCREASE;
+  unsigned int polish_iterations = 0;
+  double polish_seconds = 0.;
+  bool free_border = false;
+  bool verbose = false;
+  Step_visitor visitor;
+
+  bool polish() const { return polish_iterations > 0; }
+
+  void apply(Stretch_minimizing_preset p)
+  {
+    eta = 1.;
+    if(p == Stretch_minimizing_preset::LOWEST_STRETCH) {
+      start = Start_weights::CLAMPED_COTANGENT;
+      update = Stretch_update::EDGE;
+      rule = Step_rule::HALVE_ETA;
+    } else {
+      start = Start_weights::INITIALIZER;
+      update = Stretch_update::VERTEX;
+      rule = Step_rule::STOP_AT_INCREASE;
+    }
+  }
+};
+
+// `base` with the options of `np` applied: a preset first, then every option given.
+template <typename NamedParameters>
+Stretch_minimizing_settings read_settings(const NamedParameters& np, Stretch_minimizing_settings s)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  if constexpr(!is_default_parameter<NamedParameters, internal_np::preset_t>::value)
+    s.apply(get_parameter(np, internal_np::preset));
+  s.eta = choose_parameter(get_parameter(np, internal_np::eta), s.eta);
+  s.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), s.max_iterations);
+  s.start = choose_parameter(get_parameter(np, internal_np::start_weights), s.start);
+  s.update = choose_parameter(get_parameter(np, internal_np::stretch_update), s.update);
+  s.rule = choose_parameter(get_parameter(np, internal_np::step_rule), s.rule);
+  s.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.polish_iterations);
+  s.polish_seconds = choose_parameter(get_parameter(np, internal_np::polish_time_budget), s.polish_seconds);
+  s.free_border = choose_parameter(get_parameter(np, internal_np::free_border), s.free_border);
+  s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), s.verbose);
+  Step_visitor v = make_step_visitor(get_parameter(np, CGAL::internal_np::visitor));
+  if(v)
+    s.visitor = v;
+  return s;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_STRETCH_MINIMIZING_SETTINGS_H

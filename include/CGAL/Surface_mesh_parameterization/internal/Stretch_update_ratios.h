@@ -1,0 +1,103 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_STRETCH_UPDATE_RATIOS_H
+#define CGAL_SMP_INTERNAL_STRETCH_UPDATE_RATIOS_H
+
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_options.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// The stretch that divides each weight w_ij (one per ring entry of the system), relative to the
+// RMS stretch of the mesh: a common factor of all ratios leaves the solution unchanged, and
+// dividing by the RMS keeps the weights from drifting in magnitude.
+class Stretch_update_ratios
+{
+public:
+  // Prepares `kind` for the rings of `dc` (the edge rule needs the faces of every ring edge).
+  void init(Stretch_update kind, const Disk_component_base& dc)
+  {
+    m_kind = kind;
+    if(kind != Stretch_update::EDGE)
+      return;
+    // (edge key, face) for every real face, sorted by key: the faces of an edge are adjacent
+    std::vector<std::pair<std::uint64_t, int> > table;
+    table.reserve(3 * dc.flat.tri.size());
+    for(std::size_t f = 0; f < dc.flat.tri.size(); ++f)
+      for(int k = 0; k < 3; ++k)
+        table.emplace_back(key(dc.flat.tri[f][k], dc.flat.tri[f][(k + 1) % 3]), int(f));
+    std::sort(table.begin(), table.end());
+    m_edge_faces.assign(2 * dc.ring.size(), -1);
+    for(std::size_t r = 0; r < dc.number_of_rows(); ++r)
+      for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
+        const std::uint64_t k = key(dc.interior[r], dc.ring[e]);
+        auto it = std::lower_bound(table.begin(), table.end(), std::make_pair(k, -1));
+        for(int slot = 0; slot < 2 && it != table.end() && it->first == k; ++slot, ++it)
+          m_edge_faces[2 * e + slot] = it->second;
+      }
+  }
+
+  // ratio[e] = (stretch of ring entry e) / rms, from the last evaluation of `stretch`.
+  void compute(const Disk_component_base& dc, const Flat_stretch& stretch, double rms,
+               std::vector<double>& ratio)
+  {
+    stretch.vertex_stretch(dc.flat, rms, m_sigma);
+    ratio.resize(dc.ring.size());
+    for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
+      const int i = dc.interior[r];
+      for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
+        const int j = dc.ring[e];
+        double s = m_sigma[j];
+        if(m_kind == Stretch_update::SYMMETRIC)
+          s = 0.5 * (m_sigma[i] + m_sigma[j]);
+        else if(m_kind == Stretch_update::EDGE)
+          s = edge_stretch(e, stretch, s);
+        ratio[e] = s / rms;
+      }
+    }
+  }
+
+private:
+  static std::uint64_t key(int a, int b)
+  {
+    if(a > b)
+      std::swap(a, b);
+    return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+  }
+
+  // area-weighted RMS stretch of the measured faces of the edge of ring entry e; `fallback`
+  // (the neighbour's stretch) for an edge with none, e.g. a virtual edge of a closed hole
+  double edge_stretch(int e, const Flat_stretch& stretch, double fallback) const
+  {
+    double num = 0., den = 0.;
+    for(int slot = 0; slot < 2; ++slot) {
+      const int f = m_edge_faces[2 * e + slot];
+      if(f < 0 || !stretch.used(std::size_t(f)))
+        continue;
+      const Triangle_stretch& t = stretch.faces()[std::size_t(f)];
+      num += t.area_3d * t.l2 * t.l2;
+      den += t.area_3d;
+    }
+    return den > 0. ? std::sqrt(num / den) : fallback;
+  }
+
+  Stretch_update m_kind = Stretch_update::VERTEX;
+  std::vector<int> m_edge_faces; // two per ring entry, -1 if none
+  std::vector<double> m_sigma;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_STRETCH_UPDATE_RATIOS_H
