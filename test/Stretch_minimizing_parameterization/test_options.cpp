@@ -108,13 +108,14 @@ void check_update_ratios_of_a_linear_map()
   for(SMP::Stretch_update kind : {SMP::Stretch_update::VERTEX, SMP::Stretch_update::SYMMETRIC, SMP::Stretch_update::EDGE}) {
     SMPI::Stretch_update_ratios ratios;
     ratios.init(kind, dc);
+    const std::vector<double> ones(dc.ring.size(), 1.);
     std::vector<double> r;
-    ratios.compute(dc, stretch, s.rms, r);
-    SMP_CHECK(r.size() == dc.ring.size(), "one ratio per ring entry");
+    ratios.update(dc, stretch, s.rms, 0.7, ones, r);
+    SMP_CHECK(r.size() == dc.ring.size(), "one weight per ring entry");
     double worst = 0.;
     for(double x : r)
       worst = (std::max)(worst, std::abs(x - 1.));
-    SMP_CHECK(worst < 1e-12, "update " << int(kind) << ": ratio off 1 by " << worst);
+    SMP_CHECK(worst < 1e-12, "update " << int(kind) << ": weight factor off 1 by " << worst);
   }
 }
 

@@ -378,13 +378,14 @@ private:
     internal::Flat_stretch stretch;
     internal::Stretch_update_ratios ratios;
     ratios.init(settings.update, dc);
-    std::vector<double> w_kept, ratio_kept;
+    std::vector<double> w_kept; // the weights of the kept step, to step again from it (HALVE_ETA)
+    const bool halving = settings.rule == Step_rule::HALVE_ETA;
     const double eta_floor = settings.eta / 16.;
     double eta = settings.eta;
     for(std::size_t h = 0;; ++h) {
       if(!system.solve(w, uv, m_solver_traits))
         return false;
-      const internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv);
+      internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv);
 
       Stretch_minimizing_step step;
       step.step = h;
@@ -408,13 +409,13 @@ private:
       if(better) {
         rep.kept_step = h;
         best_uv = uv;
-        w_kept = w;
-        ratios.compute(dc, stretch, s.rms, ratio_kept);
+        if(halving)
+          w_kept = w;
       }
       const bool go_on = settings.visitor ? settings.visitor(step) : true;
       if(best_uv.empty())
         rep.stop = Stretch_minimizing_stop::FLIPPED_FACES;
-      else if(!better && (settings.rule == Step_rule::STOP_AT_INCREASE || eta / 2. < eta_floor))
+      else if(!better && (!halving || eta / 2. < eta_floor))
         rep.stop = valid ? Stretch_minimizing_stop::STRETCH_INCREASED : Stretch_minimizing_stop::FLIPPED_FACES;
       else if(h >= settings.max_iterations)
         rep.stop = Stretch_minimizing_stop::ITERATION_CAP;
@@ -423,11 +424,14 @@ private:
       if(rep.stop != Stretch_minimizing_stop::NOT_RUN)
         return true;
 
-      // a rejected step is taken again from the kept one, half as long
-      if(!better)
+      if(better) {
+        ratios.update(dc, stretch, s.rms, eta, w, w);
+      } else {
+        // a rejected step is taken again from the kept one, half as long
         eta /= 2.;
-      for(std::size_t e = 0; e < w.size(); ++e)
-        w[e] = w_kept[e] * std::pow(ratio_kept[e], -eta);
+        s = stretch.evaluate(dc.flat, best_uv);
+        ratios.update(dc, stretch, s.rms, eta, w_kept, w);
+      }
     }
   }
 

@@ -18,9 +18,9 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// The stretch that divides each weight w_ij (one per ring entry of the system), relative to the
-// RMS stretch of the mesh: a common factor of all ratios leaves the solution unchanged, and
-// dividing by the RMS keeps the weights from drifting in magnitude.
+// The update of the weights w_ij (one per ring entry of the system) by the stretch of each
+// entry relative to the RMS stretch of the mesh: a common factor of all ratios leaves the
+// solution unchanged, and dividing by the RMS keeps the weights from drifting in magnitude.
 class Stretch_update_ratios
 {
 public:
@@ -47,22 +47,28 @@ public:
       }
   }
 
-  // ratio[e] = (stretch of ring entry e) / rms, from the last evaluation of `stretch`.
-  void compute(const Disk_component_base& dc, const Flat_stretch& stretch, double rms,
-               std::vector<double>& ratio)
+  // w_out[e] = w_in[e] / ratio_e^eta for every ring entry e, where ratio_e is the stretch of
+  // the entry (from the last evaluation of `stretch`) over `rms`. `w_out` may be `w_in`.
+  void update(const Disk_component_base& dc, const Flat_stretch& stretch, double rms, double eta,
+              const std::vector<double>& w_in, std::vector<double>& w_out)
   {
     stretch.vertex_stretch(dc.flat, rms, m_sigma);
-    ratio.resize(dc.ring.size());
+    w_out.resize(w_in.size());
+    if(m_kind == Stretch_update::VERTEX) {
+      // one power per vertex rather than per ring entry
+      for(double& s : m_sigma)
+        s = std::pow(s / rms, -eta);
+      for(std::size_t e = 0; e < w_in.size(); ++e)
+        w_out[e] = w_in[e] * m_sigma[dc.ring[e]];
+      return;
+    }
     for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
       const int i = dc.interior[r];
       for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
         const int j = dc.ring[e];
-        double s = m_sigma[j];
-        if(m_kind == Stretch_update::SYMMETRIC)
-          s = 0.5 * (m_sigma[i] + m_sigma[j]);
-        else if(m_kind == Stretch_update::EDGE)
-          s = edge_stretch(e, stretch, s);
-        ratio[e] = s / rms;
+        const double s = m_kind == Stretch_update::SYMMETRIC ? 0.5 * (m_sigma[i] + m_sigma[j])
+                                                             : edge_stretch(e, stretch, m_sigma[j]);
+        w_out[e] = w_in[e] * std::pow(s / rms, -eta);
       }
     }
   }

@@ -116,18 +116,18 @@ public:
 
 private:
   // position of entry (i, j) in the value array of the compressed matrix
-  std::ptrdiff_t slot(Eigen::Index i, Eigen::Index j) const
+  int slot(Eigen::Index i, Eigen::Index j) const
   {
     if(Matrix::IsRowMajor)
       std::swap(i, j);
     const auto* first = m_A.innerIndexPtr() + m_A.outerIndexPtr()[j];
     const auto* last = m_A.innerIndexPtr() + m_A.outerIndexPtr()[j + 1];
-    return std::lower_bound(first, last, i) - m_A.innerIndexPtr();
+    return int(std::lower_bound(first, last, i) - m_A.innerIndexPtr());
   }
 
   const Disk_component_base& m_dc;
   Matrix m_A;
-  std::vector<std::ptrdiff_t> m_diag, m_slot;
+  std::vector<int> m_diag, m_slot; // positions in the value array (nonzeros fit an int, as Eigen's indices)
   Eigen::MatrixXd m_B, m_X;
   bool m_analysed = false;
 };
