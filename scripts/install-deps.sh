@@ -3,9 +3,11 @@
 # Idempotent: does nothing (and prints nothing) when everything is present.
 set -euo pipefail
 
-# The build's packages, and any further ones named on the command line.
+# The build's packages, and any further ones named on the command line. OpenBLAS (serial: the
+# fronts are small, threads gained nothing here) replaces the reference BLAS under UMFPACK
+# through Debian's alternatives: U^opt on 830k vertices went from 42 s to 20 s.
 packages=(g++ cmake make pkg-config libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
-          libcairo2-dev libosmesa6-dev libsuitesparse-dev "$@")
+          libcairo2-dev libosmesa6-dev libsuitesparse-dev libopenblas0-serial "$@")
 
 missing=()
 for p in "${packages[@]}"; do

@@ -262,7 +262,7 @@ std::vector<Method> all_methods()
   const std::string bicgstab = "BiCGSTAB + ILUT (CGAL default)";
   const std::string sparse_lu = "SparseLU";
 #if defined(CGAL_SMP_USE_UMFPACK)
-  const std::string minimizer_solver = "UMFPACK (METIS, no refinement)";
+  const std::string minimizer_solver = "UMFPACK (AMD below 150k unknowns, METIS above; no refinement)";
 #else
   const std::string minimizer_solver = sparse_lu;
 #endif
@@ -295,11 +295,11 @@ std::vector<Method> all_methods()
        return run_minimizer(c, r, SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH,
                                   SMP::parameters::polish_iterations(100u)));
      }},
-    {"lowest_free", "LOWEST_STRETCH + polish, free border (at most 100 steps)",
+    {"lowest_free", "LOWEST_STRETCH + polish, free border (at most 10 steps)",
      "square start, then free (no overlap)", minimizer_solver + " + sparse Cholesky",
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH,
-                                  SMP::parameters::polish_iterations(100u, SMP::parameters::free_border(true))));
+                                  SMP::parameters::polish_iterations(10u, SMP::parameters::free_border(true))));
      }},
     {"cgal_mvc", "CGAL Mean_value_coordinates", square, bicgstab, run_fixed<CGAL_MVC>},
     {"cgal_barycentric", "CGAL Barycentric_mapping (Tutte)", square, bicgstab, run_fixed<CGAL_Tutte>},

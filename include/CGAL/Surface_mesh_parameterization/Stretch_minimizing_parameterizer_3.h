@@ -98,7 +98,7 @@ namespace Surface_mesh_parameterization {
 /// \code
 ///   CGAL::Eigen_solver_traits<Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType> >
 /// \endcode
-///         used with METIS ordering and without UMFPACK's iterative refinement.
+///         used with AMD ordering below 150,000 unknowns and METIS above, without UMFPACK's iterative refinement.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
 /// \sa `CGAL::Surface_mesh_parameterization::Stretch_minimizing_report`

@@ -6,8 +6,8 @@
 
 // The default sparse solver of the package. With CGAL_SMP_USE_UMFPACK defined (the CMake target
 // defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU; else Eigen's SparseLU with
-// COLAMD ordering. On the mannequin head and its Loop refinement, UMFPACK with METIS ordering
-// and without iterative refinement took about 0.6 times the time of SparseLU (benchmark/).
+// COLAMD ordering. On the mannequin head and its Loop refinement, UMFPACK without iterative
+// refinement took about 0.6 times the time of SparseLU (benchmark/).
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
