@@ -1,9 +1,10 @@
 // Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The options beyond the paper: start weights, stretch update, step rule, presets. The
-// formulas on cases with a known answer first, then every combination on every bundled disk
-// mesh: no flipped face at any step, and the order of the results that the options promise.
+// The options beyond the paper: start weights, stretch update, step rule, presets, and the
+// polish through the parameterizer. The formulas on cases with a known answer first, then every
+// combination on every bundled disk mesh: no flipped face at any step, and the order of the
+// results that the options promise. (The polisher itself is tested in test_polish.)
 
 #include "smp_test_util.h"
 
@@ -16,6 +17,7 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -224,6 +226,100 @@ void check_presets(const std::string& name, bool expect_lower, double* paper_l2,
   SMP_CHECK(p.report().kept().l2_stretch == lowest.report.kept().l2_stretch, name << ": constructor preset lost");
 }
 
+// Proper or touching intersection of the segments (a, b) and (c, d).
+bool segments_meet(const Point_2& a, const Point_2& b, const Point_2& c, const Point_2& d)
+{
+  auto orient = [](const Point_2& p, const Point_2& q, const Point_2& r) {
+    const double o = (q.x() - p.x()) * (r.y() - p.y()) - (q.y() - p.y()) * (r.x() - p.x());
+    return (o > 0.) - (o < 0.);
+  };
+  auto on = [](const Point_2& p, const Point_2& q, const Point_2& r) { // r on segment pq, collinear
+    return (std::min)(p.x(), q.x()) <= r.x() && r.x() <= (std::max)(p.x(), q.x()) &&
+           (std::min)(p.y(), q.y()) <= r.y() && r.y() <= (std::max)(p.y(), q.y());
+  };
+  const int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+  if(o1 != o2 && o3 != o4)
+    return true;
+  return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b));
+}
+
+// The polish through the parameterizer, fixed and free border: it runs, never raises the
+// stretch, flips no face at any step; the fixed border does not move; the free border stays a
+// simple polygon, and the map is scaled into the unit square.
+void check_polish(const std::string& name)
+{
+  Mesh m;
+  SMP_CHECK(CGAL::IO::read_polygon_mesh(smp_test::data_file(name), m), "cannot read " << name);
+  const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
+  UV_map plain = m.add_property_map<vertex_descriptor, Point_2>("v:plain", Point_2(0, 0)).first;
+  Smp start(SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH));
+  SMP_CHECK(SMP::parameterize(m, start, bhd, plain) == SMP::OK, name << ": no start");
+
+  for(bool free : {false, true}) {
+    const std::string what = name + (free ? " free-border polish" : " fixed-border polish");
+    std::vector<SMP::Stretch_minimizing_step> steps;
+    auto record = [&steps](const SMP::Stretch_minimizing_step& s) { if(s.polish) steps.push_back(s); };
+    Smp p(SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH,
+          SMP::parameters::polish_iterations(20u, SMP::parameters::free_border(free,
+          SMP::parameters::visitor(record)))));
+    UV_map uv = m.add_property_map<vertex_descriptor, Point_2>("v:uv", Point_2(0, 0)).first;
+    const SMP::Error_code status = SMP::parameterize(m, p, bhd, uv);
+    const SMP::Stretch_minimizing_report& r = p.report();
+    SMP_CHECK(status == SMP::OK && r.polish.ran(), what << ": " << SMP::error_message(status) << " " << r.polish.message);
+    if(status != SMP::OK || !r.polish.ran()) {
+      m.remove_property_map(uv);
+      continue;
+    }
+    SMP_CHECK(r.polish.free_border == free && r.polish.iterations == steps.size() && steps.size() <= 20,
+              what << ": " << steps.size() << " steps seen, " << r.polish.iterations << " reported");
+    // it starts from U^opt; with a free border, the ears that the square flattened are first
+    // opened (their tip moved off the side), which changes the stretch of those faces only
+    SMP_CHECK(free ? std::abs(r.polish.l2_before - r.kept().l2_stretch) <= 1e-3 * r.kept().l2_stretch
+                   : r.polish.l2_before == r.kept().l2_stretch,
+              what << ": the polish starts at " << r.polish.l2_before << ", U^opt has " << r.kept().l2_stretch);
+    double previous = r.polish.l2_before;
+    for(const SMP::Stretch_minimizing_step& s : steps) {
+      SMP_CHECK(s.flipped_faces == 0 && s.degenerate_uv_faces <= r.kept().degenerate_uv_faces,
+                what << ": step " << s.step << " has " << s.flipped_faces << " flipped, " << s.degenerate_uv_faces << " degenerate faces");
+      // the energy decreases; with a fixed border the normalized L2 is a function of it
+      if(!free)
+        SMP_CHECK(s.l2_stretch <= previous * (1. + 1e-12), what << ": step " << s.step << " raised L2 to " << s.l2_stretch);
+      previous = s.l2_stretch;
+    }
+    SMP_CHECK(r.l2_stretch() < r.polish.l2_before, what << ": " << r.polish.l2_before << " -> " << r.l2_stretch());
+    const SMP::Stretch_statistics st = SMP::compute_stretch_statistics(m, uv);
+    SMP_CHECK(std::abs(st.l2_stretch - r.l2_stretch()) <= 1e-9 * st.l2_stretch && st.flipped_faces == 0,
+              what << ": written map L2 " << st.l2_stretch << " flips " << st.flipped_faces << ", report " << r.l2_stretch());
+
+    // the border: fixed, or a simple polygon in the unit square
+    std::vector<Point_2> loop;
+    double moved = 0., lo = 1., hi = 0.;
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(bhd, m)) {
+      const vertex_descriptor v = target(h, m);
+      loop.push_back(uv[v]);
+      moved = (std::max)(moved, std::hypot(uv[v].x() - plain[v].x(), uv[v].y() - plain[v].y()));
+      lo = (std::min)({lo, uv[v].x(), uv[v].y()});
+      hi = (std::max)({hi, uv[v].x(), uv[v].y()});
+    }
+    if(!free) {
+      SMP_CHECK(moved == 0., what << ": the fixed border moved by " << moved);
+    } else {
+      SMP_CHECK(moved > 1e-3, what << ": the free border did not move");
+      SMP_CHECK(std::abs(lo) < 1e-12 && std::abs(hi - 1.) < 1e-12, what << ": not scaled into the unit square: " << lo << " " << hi);
+      const std::size_t n = loop.size();
+      std::size_t crossings = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        for(std::size_t j = i + 2; j < n; ++j)
+          if(!(i == 0 && j == n - 1) && segments_meet(loop[i], loop[(i + 1) % n], loop[j], loop[(j + 1) % n]))
+            ++crossings;
+      SMP_CHECK(crossings == 0, what << ": the border crosses itself " << crossings << " times");
+    }
+    std::cout << what << ": L2 " << r.polish.l2_before << " -> " << r.l2_stretch() << " in "
+              << r.polish.iterations << " steps" << std::endl;
+    m.remove_property_map(uv);
+  }
+}
+
 int main()
 {
   check_ring_weights();
@@ -240,5 +336,7 @@ int main()
     check_presets(name, mesh.lower, &paper, &lowest);
     std::cout << name << ": L2 stretch, PAPER " << paper << ", LOWEST_STRETCH " << lowest << std::endl;
   }
+  for(const char* name : {"mannequin-devil.off", "three_peaks.off", "mushroom.off", "holes.off"})
+    check_polish(name);
   return smp_test::summary();
 }

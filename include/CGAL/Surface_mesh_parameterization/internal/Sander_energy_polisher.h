@@ -10,12 +10,12 @@
 // Jacobian of the affine map from the face's 3D triangle (in a 2D frame of its plane) to its uv
 // triangle; ||J^-1||_F^2 = ||J||_F^2 / det(J)^2 = 1 / s1^2 + 1 / s2^2.
 //
-// With a fixed border the uv area is constant, so E is the normalized L2 stretch up to a
-// constant factor. With a free border E only shrinks as the map grows; the normalized L2
-// stretch is scale invariant and is minimized through G = E + mu * (uv area), mu = E0 / A0
-// fixed at the start: the start scale is then optimal in scale, and G < G0 implies
-// E * A < E0 * A0 (AM-GM). The border loop is kept simple, which with flip-free faces makes the
-// map of a disk bijective.
+// With a fixed border and no hole the uv area A is constant, so E is the normalized L2 stretch
+// up to a constant factor. With a free border (E only shrinks as the map grows) or with holes
+// (whose area changes) the normalized L2 stretch is a function of E * A instead: each step
+// lowers G = E + mu * A with mu = E / A taken at the current map, where G = 2 E, and any G
+// below that gives E * A below the current one (AM-GM). The border loop is kept simple, which
+// with flip-free faces makes the map of a disk bijective.
 //
 // What it does not do: it does not change the connectivity, it does not move a vertex that is in
 // no energy face (e.g. the centre of a fan closing a hole), and it stops at a local minimum.
@@ -163,7 +163,7 @@ struct Sander_polish_step
 {
   std::size_t iteration = 0;               // 1 after the first step
   double l2_stretch = 0.;                  // normalized, by Flat_stretch
-  double energy = 0.;                      // the objective (G with a free border)
+  double energy = 0.;                      // E, or E * A with a free border or holes
   double seconds = 0.;                     // since the start of the call
   const std::vector<Vec2>* uv = nullptr;   // the current map, valid during the call only
 };
@@ -184,7 +184,7 @@ struct Sander_polish_result
   Sander_polish_stop stop = Sander_polish_stop::NOT_RUN;
   std::string message;                     // why, when status is not OK
   std::size_t iterations = 0;              // steps taken
-  double energy_before = 0., energy_after = 0.;  // objective over the faces that can move
+  double energy_before = 0., energy_after = 0.;  // E (or E * A) over the faces that can move
   double l2_before = 0., l2_after = 0.;    // normalized L2 stretch of all faces (Flat_stretch)
   double seconds = 0.;
 };
@@ -232,14 +232,13 @@ public:
       return fail(Sander_polish_status::BAD_START, why);
     r.l2_before = r.l2_after = m_stretch.evaluate(m, uv).l2;
 
+    // With holes or a free border the uv area of the energy faces changes, and the normalized
+    // L2 stretch is a function of E * A rather than of E: each step then lowers
+    // G = E + mu A with mu = E / A taken at the current map, which lowers E * A (AM-GM).
+    m_area_term = settings.free_border || !guard.empty();
     m_mu = 0.;
     double E = energy_at(0.);
-    if(settings.free_border) {
-      // mu = E0 / A0: the start is stationary in scale
-      m_mu = E / m_area_uv;
-      E *= 2.;
-    }
-    r.energy_before = r.energy_after = E;
+    r.energy_before = r.energy_after = m_area_term ? E * m_area_uv : E;
     if(m_dofs == 0) {
       r.stop = Sander_polish_stop::CONVERGED;
       r.seconds = seconds();
@@ -254,6 +253,12 @@ public:
         break;
       }
 
+      if(m_area_term) {
+        m_mu = 0.;
+        const double pure = energy_at(0.);
+        m_mu = pure / area_of(m_x);
+        E = 2. * pure; // G at the current map
+      }
       assemble();
       if(!factored) {
         m_solver.analyzePattern(m_H);
@@ -288,7 +293,7 @@ public:
         Sander_polish_step s;
         s.iteration = r.iterations;
         s.l2_stretch = m_stretch.evaluate(m, m_current).l2;
-        s.energy = E;
+        s.energy = m_area_term ? product_of(m_x) : E;
         s.seconds = seconds();
         s.uv = &m_current;
         go_on = visitor(s);
@@ -297,9 +302,9 @@ public:
       if(!go_on) { r.stop = Sander_polish_stop::VISITOR; break; }
     }
 
-    if(E < r.energy_before) {
+    if(r.iterations > 0) { // every step taken lowered the energy (E * A with the area term)
       write(uv);
-      r.energy_after = E;
+      r.energy_after = m_area_term ? product_of(m_x) : E;
       r.l2_after = m_stretch.evaluate(m, uv).l2;
     }
     r.seconds = seconds();
@@ -457,6 +462,25 @@ private:
     m_g.resize(n);
     m_p.resize(n);
     return true;
+  }
+
+  // The uv area of the energy faces of `x`.
+  double area_of(const std::vector<Vec2>& x) const
+  {
+    double a = 0.;
+    for(const Energy_face& f : m_energy)
+      a += 0.5 * cross(x[f.v[0]], x[f.v[1]], x[f.v[2]]);
+    return a;
+  }
+
+  // E * A of `x` (internal coordinates, one entry per vertex), the scale-free energy of the
+  // area-term mode.
+  double product_of(const std::vector<Vec2>& x) const
+  {
+    double e = 0.;
+    for(const Energy_face& f : m_energy)
+      e += sander_face_energy(jacobian(f, x), f.area, 0.);
+    return e * area_of(x);
   }
 
   // Objective at x + t * dir, written to m_trial; +inf if a face folds.
@@ -639,6 +663,7 @@ private:
   std::vector<Box> m_boxes, m_boxes_copy;
   bool m_flip = false;                     // uv is mirrored (v -> -v) in m_x so that faces are positive
   double m_mu = 0., m_area_uv = 0.;
+  bool m_area_term = false;
   double m_trial_t = 0.;                   // m_trial = m_x + m_trial_t * m_dir
   Eigen::SparseMatrix<double> m_H;
   Eigen::VectorXd m_g, m_p;
