@@ -30,6 +30,7 @@
 typedef CGAL::Simple_cartesian<double>      Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef SMP::Stretch_minimizing_parameterizer_3<Mesh> Smp_parameterizer;
 namespace fs = std::filesystem;
 
 struct Result
@@ -169,10 +170,30 @@ void check_outputs()
   SMP_CHECK(pictures == 7, pictures << " pictures");
 
   // the other methods and borders run too
-  for(const char* args : {"-m mvc --border circle", "-m lscm", "-m u1 --border ear-aware", "-m u0 --start mvc"}) {
+  for(const char* args : {"-m mvc --border circle", "-m lscm", "-m u1 --border ear-aware", "-m u0 --start mvc",
+                          "--preset lowest", "--start cot --update symmetric --rule halve", "--polish 5",
+                          "--polish-time 0.5 --free-border"}) {
     const Result o = run(input + " -q --no-pictures -o out_methods " + args);
     SMP_CHECK(o.status == 0, args << ": " << o.err);
   }
+  // the preset and the polish reach the report as the library gives them
+  fs::remove_all("out_polish");
+  SMP_CHECK(run(input + " -q --no-pictures -o out_polish --preset lowest --polish 5 --free-border").status == 0, "polish run");
+  Smp_parameterizer polished(SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH,
+                             SMP::parameters::polish_iterations(5u, SMP::parameters::free_border(true))));
+  SMP_CHECK(SMP::parameterize(expected, polished, CGAL::Polygon_mesh_processing::longest_border(expected).first, uv) == SMP::OK &&
+            polished.report().polish.ran(), "library polish failed");
+  {
+    boost::property_tree::ptree json;
+    boost::property_tree::read_json("out_polish/report.json", json);
+    SMP_CHECK(json.get<bool>("polish.ran") && json.get<std::size_t>("polish.iterations") == polished.report().polish.iterations &&
+              std::abs(json.get<double>("polish.l2_after") - polished.report().l2_stretch()) < 1e-9 &&
+              std::abs(json.get<double>("measures.l2_stretch") - polished.report().l2_stretch()) < 1e-9,
+              "report.json polish: " << json.get<double>("polish.l2_after") << " vs " << polished.report().l2_stretch());
+    SMP_CHECK(json.get<std::string>("options.start") == "cot" && json.get<std::string>("options.rule") == "halve",
+              "report.json options of the preset");
+  }
+
   // a closed mesh with --cut, several components with --charts
   SMP_CHECK(run(smp_test::data_file("bear.off") + " -q --no-pictures --cut -o out_bear").status == 0, "--cut on bear");
 }
@@ -193,6 +214,10 @@ void check_errors()
   check_error("iterations not a number", smp_test::data_file("nefertiti.off") + " --iterations many", "iterations");
   check_error("unknown method", smp_test::data_file("nefertiti.off") + " -m best", "method");
   check_error("unknown option", smp_test::data_file("nefertiti.off") + " --fast", "option");
+  check_error("unknown preset", smp_test::data_file("nefertiti.off") + " --preset best", "preset");
+  check_error("unknown update", smp_test::data_file("nefertiti.off") + " --update face", "update");
+  check_error("free border alone", smp_test::data_file("nefertiti.off") + " --free-border", "--polish");
+  check_error("negative polish time", smp_test::data_file("nefertiti.off") + " --polish-time -1", "polish-time");
   check_error("natural border folds", smp_test::data_file("three_peaks.off") + " --border natural --no-pictures -o out_fold", "one-to-one");
   std::ofstream("nan.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
   const Result nan = run("nan.off -o out_nan");
