@@ -1,0 +1,151 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_POLISH_STAGE_H
+#define CGAL_SMP_INTERNAL_POLISH_STAGE_H
+
+// The polish stage of the stretch minimizer, after U^opt: the polisher run on the component,
+// its steps reported like the others.
+
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Stretch_minimizing_settings.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// What a visitor sees of the map of step h, measured by `s`.
+inline Stretch_minimizing_step make_step(std::size_t h, const Flat_stretch_summary& s,
+                                         std::chrono::steady_clock::time_point start)
+{
+  Stretch_minimizing_step step;
+  step.step = h;
+  step.l2_stretch = s.l2;
+  step.linf_stretch = s.linf;
+  step.flipped_faces = s.flipped;
+  step.degenerate_uv_faces = s.degenerate_uv;
+  step.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return step;
+}
+
+// A fixed polygonal border flattens an ear (a face whose middle vertex has no other face)
+// lying along one side; the free polish needs every face positive: move such a middle vertex
+// off the side, outwards, by a tenth of the ear's width. Its only face is the ear, so no other
+// face changes.
+inline void open_flat_ears(const Disk_component_base& dc, std::vector<Vec2>& uv)
+{
+  std::vector<int> faces_of(dc.flat.xyz.size(), 0);
+  for(const Triangle& t : dc.flat.tri)
+    for(int v : t)
+      ++faces_of[v];
+  auto signed_area = [&uv](const Triangle& t) {
+    const Vec2 &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
+    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+  };
+  double total = 0.;
+  for(const Triangle& t : dc.flat.tri)
+    total += signed_area(t);
+  const double orientation = total >= 0. ? 1. : -1.;
+  for(const Triangle& t : dc.flat.tri) {
+    const double a = signed_area(t);
+    const double width = std::hypot(uv[t[1]][0] - uv[t[0]][0], uv[t[1]][1] - uv[t[0]][1]) +
+                         std::hypot(uv[t[2]][0] - uv[t[1]][0], uv[t[2]][1] - uv[t[1]][1]);
+    if(orientation * a > 1e-12 * width * width)
+      continue;
+    for(int k = 0; k < 3; ++k) {
+      const int v = t[k], p = t[(k + 2) % 3], n = t[(k + 1) % 3];
+      if(faces_of[v] != 1 || dc.row[v] != -1)
+        continue;
+      // the normal of the side (p, n) on the side that gives the face the mesh's orientation
+      const double dx = uv[n][0] - uv[p][0], dy = uv[n][1] - uv[p][1];
+      const Vec2 normal = {dy * orientation, -dx * orientation};
+      uv[v] = {uv[v][0] + 0.1 * normal[0], uv[v][1] + 0.1 * normal[1]};
+      break;
+    }
+  }
+}
+
+// A free border leaves the map at any place and scale: move it into the unit square, keeping
+// its proportions, as the fixed borders are.
+inline void fit_in_unit_square(std::vector<Vec2>& uv)
+{
+  Vec2 lo = uv.front(), hi = uv.front();
+  for(const Vec2& p : uv)
+    for(int k = 0; k < 2; ++k) {
+      lo[k] = (std::min)(lo[k], p[k]);
+      hi[k] = (std::max)(hi[k], p[k]);
+    }
+  const double extent = (std::max)(hi[0] - lo[0], hi[1] - lo[1]);
+  if(!(extent > 0.))
+    return;
+  for(Vec2& p : uv)
+    p = {(p[0] - lo[0]) / extent, (p[1] - lo[1]) / extent};
+}
+
+// Lowers the stretch of `uv` (U^opt) further by a flip-free projected Newton descent of
+// Sander's energy; `uv` is left as it is if the polish cannot start. The vertices from
+// `real_vertices` on are the centres of the fans closing the holes.
+inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertices,
+                         const Stretch_minimizing_settings& settings,
+                         std::chrono::steady_clock::time_point start, std::vector<Vec2>& uv,
+                         Stretch_minimizing_polish& pol)
+{
+  pol.free_border = settings.free_border;
+  std::vector<char> fixed(dc.flat.xyz.size(), 0);
+  for(std::size_t v = real_vertices; v < fixed.size(); ++v)
+    fixed[v] = 1; // hole centres: they only keep the holes from folding
+  if(!settings.free_border)
+    for(int v : dc.border)
+      fixed[v] = 1;
+  Sander_polish_settings ps;
+  ps.max_iterations = settings.polish_iterations;
+  ps.time_budget = settings.polish_seconds;
+  ps.free_border = settings.free_border;
+
+  Flat_stretch stretch;
+  auto visitor = [&](const Sander_polish_step& s) {
+    const Flat_stretch_summary m = stretch.evaluate(dc.flat, *s.uv);
+    Stretch_minimizing_step step = make_step(s.iteration, m, start);
+    step.polish = true;
+    pol.history.push_back(step);
+    if(settings.verbose)
+      std::cerr << "stretch minimization: polish " << step.step << "  L2 " << m.l2 << "  Linf " << m.linf
+                << "  " << step.seconds << " s" << std::endl;
+    return settings.visitor ? settings.visitor(step) : true;
+  };
+  if(settings.free_border)
+    open_flat_ears(dc, uv);
+  Sander_energy_polisher<> polisher;
+  const Sander_polish_result r =
+    polisher.polish(dc.flat, dc.virtual_tri, fixed, dc.border, uv, ps, visitor);
+  pol.seconds = r.seconds;
+  if(r.status != Sander_polish_status::OK) {
+    pol.message = r.message;
+    return;
+  }
+  typedef Sander_polish_stop Stop;
+  pol.stop = r.stop == Stop::CONVERGED ? Polish_stop::CONVERGED
+           : r.stop == Stop::ITERATION_CAP ? Polish_stop::ITERATION_CAP
+           : r.stop == Stop::TIME_BUDGET ? Polish_stop::TIME_BUDGET
+           : r.stop == Stop::VISITOR ? Polish_stop::VISITOR : Polish_stop::NO_PROGRESS;
+  pol.iterations = r.iterations;
+  pol.l2_before = r.l2_before;
+  pol.l2_after = r.l2_after;
+  if(settings.free_border)
+    fit_in_unit_square(uv);
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_POLISH_STAGE_H
