@@ -338,5 +338,16 @@ int main()
   }
   for(const char* name : {"mannequin-devil.off", "three_peaks.off", "mushroom.off", "holes.off"})
     check_polish(name);
+
+  // a time budget alone asks for the polish, which stops on it or converges
+  {
+    Mesh m;
+    SMP_CHECK(CGAL::IO::read_polygon_mesh(smp_test::data_file("mannequin-devil.off"), m), "cannot read");
+    Run r = run(m, CGAL::Polygon_mesh_processing::longest_border(m).first, SMP::parameters::polish_time_budget(0.2));
+    SMP_CHECK(r.status == SMP::OK && r.report.polish.ran() &&
+              (r.report.polish.stop == SMP::Polish_stop::TIME_BUDGET || r.report.polish.stop == SMP::Polish_stop::CONVERGED) &&
+              r.report.polish.iterations > 0 && r.written_l2 < r.report.kept().l2_stretch,
+              "time budget alone: " << r.report.polish.iterations << " steps, L2 " << r.written_l2);
+  }
   return smp_test::summary();
 }

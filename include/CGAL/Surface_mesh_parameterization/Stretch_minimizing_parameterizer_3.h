@@ -67,6 +67,11 @@ namespace Surface_mesh_parameterization {
 /// one side of the square) are left out of the vertex stretch and of the stopping measure,
 /// and counted in the report.
 ///
+/// Beyond the paper, named parameters choose other start weights, another stretch update and
+/// another rule for a step that does not help (`Stretch_minimizing_preset::LOWEST_STRETCH` sets
+/// the three), and a polish after \f$ U^{opt} \f$: a projected Newton descent of Sander's stretch
+/// energy that keeps every face positive, with the border fixed or free (then never crossing itself).
+///
 /// The border, the initial weights and the solver are chosen through the template parameters;
 /// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`
 /// copies the parameterizer, so options travel inside it) or to `parameterize()` for one call.
@@ -194,7 +199,8 @@ public:
   ///     \cgalParamDefault{0}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{polish_time_budget}
-  ///     \cgalParamDescription{time budget of the polish, in seconds (0: none)}
+  ///     \cgalParamDescription{time budget of the polish, in seconds (0: none); given alone, it asks for
+  ///                           the polish with no cap on its steps}
   ///     \cgalParamType{double}
   ///     \cgalParamDefault{0}
   ///   \cgalParamNEnd
@@ -248,8 +254,7 @@ public:
   /// \param uvmap receives the parameterization of the vertices of that component (on success)
   /// \param vimap vertex index map
   /// \param vpmap receives `true` for every parameterized vertex
-  /// \param np an optional sequence of named parameters among the ones listed below; each one
-  ///        given overrides, for this call only, the value given to the constructor
+  /// \param np an optional sequence of named parameters (see below)
   ///
   /// The named parameters are the ones of the constructor (`preset`, `eta`, `number_of_iterations`,
   /// `start_weights`, `stretch_update`, `step_rule`, `polish_iterations`, `polish_time_budget`,

@@ -28,7 +28,8 @@ struct Stretch_minimizing_settings
   bool verbose = false;
   Step_visitor visitor;
 
-  bool polish() const { return polish_iterations > 0; }
+  // a time budget alone asks for the polish too, with no cap on its steps
+  bool polish() const { return polish_iterations > 0 || polish_seconds > 0.; }
 
   void apply(Stretch_minimizing_preset p)
   {

@@ -17,6 +17,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -107,7 +108,8 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
     for(int v : dc.border)
       fixed[v] = 1;
   Sander_polish_settings ps;
-  ps.max_iterations = settings.polish_iterations;
+  ps.max_iterations = settings.polish_iterations > 0 ? settings.polish_iterations
+                                                    : (std::numeric_limits<unsigned int>::max)();
   ps.time_budget = settings.polish_seconds;
   ps.free_border = settings.free_border;
 
