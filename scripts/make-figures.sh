@@ -14,11 +14,16 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$fig"
 mesh=examples/Stretch_minimizing_parameterization/data/mannequin-devil.off
-for method in u0 u1 uopt; do
-  build/release/tools/smp-parameterize "$mesh" -m "$method" -q --size 400 -o "$work/$method"
-  name=$(echo "$method" | sed 's/^u/U/')
-  cp "$work/$method/mannequin-devil_checker_three_quarter.png" "$fig/mannequin_${name}_checker.png"
-  cp "$work/$method/mannequin-devil_stretch_three_quarter.png" "$fig/mannequin_${name}_stretch.png"
-  cp "$work/$method/mannequin-devil_uv_stretch.png" "$fig/mannequin_${name}_uv_stretch.png"
-done
+# name, then the tool's options: the paper's U^0, U^1, U^opt, and U^opt polished with a free border
+while read -r name options; do
+  build/release/tools/smp-parameterize "$mesh" $options -q --size 400 -o "$work/$name"
+  cp "$work/$name/mannequin-devil_checker_three_quarter.png" "$fig/mannequin_${name}_checker.png"
+  cp "$work/$name/mannequin-devil_stretch_three_quarter.png" "$fig/mannequin_${name}_stretch.png"
+  cp "$work/$name/mannequin-devil_uv_stretch.png" "$fig/mannequin_${name}_uv_stretch.png"
+done <<'EOF_RUNS'
+U0 -m u0
+U1 -m u1
+Uopt -m uopt
+Ufree -m uopt --polish 100 --free-border
+EOF_RUNS
 echo "figures written to $fig"
