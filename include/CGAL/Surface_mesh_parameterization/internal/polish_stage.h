@@ -124,16 +124,19 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
                 << "  " << step.seconds << " s" << std::endl;
     return settings.visitor ? settings.visitor(step) : true;
   };
+  // on a copy: if the polish cannot start, `uv` stays U^opt, ears and all
+  std::vector<Vec2> polished = uv;
   if(settings.free_border)
-    open_flat_ears(dc, uv);
+    open_flat_ears(dc, polished);
   Sander_energy_polisher<> polisher;
   const Sander_polish_result r =
-    polisher.polish(dc.flat, dc.virtual_tri, fixed, dc.border, uv, ps, visitor);
+    polisher.polish(dc.flat, dc.virtual_tri, fixed, dc.border, polished, ps, visitor);
   pol.seconds = r.seconds;
   if(r.status != Sander_polish_status::OK) {
     pol.message = r.message;
     return;
   }
+  uv.swap(polished);
   typedef Sander_polish_stop Stop;
   pol.stop = r.stop == Stop::CONVERGED ? Polish_stop::CONVERGED
            : r.stop == Stop::ITERATION_CAP ? Polish_stop::ITERATION_CAP
