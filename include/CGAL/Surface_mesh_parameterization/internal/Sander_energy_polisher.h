@@ -163,6 +163,7 @@ struct Sander_polish_step
 {
   std::size_t iteration = 0;               // 1 after the first step
   double l2_stretch = 0.;                  // normalized, by Flat_stretch
+  Flat_stretch_summary measures;           // all of Flat_stretch's summary of the current map
   double energy = 0.;                      // E, or E * A with a free border or holes
   double seconds = 0.;                     // since the start of the call
   const std::vector<Vec2>* uv = nullptr;   // the current map, valid during the call only
@@ -292,7 +293,8 @@ public:
         write(m_current);
         Sander_polish_step s;
         s.iteration = r.iterations;
-        s.l2_stretch = m_stretch.evaluate(m, m_current).l2;
+        s.measures = m_stretch.evaluate(m, m_current);
+        s.l2_stretch = s.measures.l2;
         s.energy = m_area_term ? product_of(m_x) : E;
         s.seconds = seconds();
         s.uv = &m_current;

@@ -113,9 +113,8 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
   ps.time_budget = settings.polish_seconds;
   ps.free_border = settings.free_border;
 
-  Flat_stretch stretch;
   auto visitor = [&](const Sander_polish_step& s) {
-    const Flat_stretch_summary m = stretch.evaluate(dc.flat, *s.uv);
+    const Flat_stretch_summary& m = s.measures; // measured once, by the polisher
     Stretch_minimizing_step step = make_step(s.iteration, m, start);
     step.polish = true;
     pol.history.push_back(step);
