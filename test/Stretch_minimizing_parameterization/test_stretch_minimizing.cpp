@@ -3,7 +3,8 @@
 //
 // The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
 // minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
-// initializers and solvers, and the quality bar of the paper's Mannequin head.
+// initializers and solvers, the default solver on a large system, and the quality bar of the
+// paper's Mannequin head.
 
 #include "smp_test_util.h"
 
@@ -18,8 +19,10 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseLU>
 
 #include <algorithm>
 #include <cmath>
@@ -220,6 +223,34 @@ void check_options_and_visitor()
   SMP_CHECK(max_distance(m, uvi, uvd) < 1e-7, "iterative and direct differ by " << max_distance(m, uvi, uvd));
 }
 
+#if defined(CGAL_SMP_USE_UMFPACK)
+// Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from
+// the symbolic estimate and then from the last factorization, hands memory back between steps
+// and frees its factors after each solve and after the call: the maps must be those of Eigen's
+// SparseLU, and a second call of the same object (which analyses again) must repeat the first.
+void check_large_system()
+{
+  Loaded l = load("mannequin-devil.off");
+  CGAL::Subdivision_method_3::Loop_subdivision(l.mesh, CGAL::parameters::number_of_iterations(2));
+  Mesh& m = l.mesh;
+  l.bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
+  typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                                    Eigen::COLAMDOrdering<int> > > Sparse_lu;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Sparse_lu>
+    reference(SMP::Shape_preserving_parameterizer_3<Mesh>(), SMP::parameters::number_of_iterations(1));
+  Default_smp p(SMP::parameters::number_of_iterations(1));
+  UV_map uvr = new_uv(m, "v:uv_ref"), uv1 = new_uv(m, "v:uv1"), uv2 = new_uv(m, "v:uv2");
+  check_run("207k vertices, SparseLU", m, l.bhd, reference, uvr, SMP::parameterize(m, reference, l.bhd, uvr));
+  check_run("207k vertices, default", m, l.bhd, p, uv1, SMP::parameterize(m, p, l.bhd, uv1));
+  SMP_CHECK(p.report().interior_vertices >= 150000, "only " << p.report().interior_vertices << " unknowns");
+  SMP_CHECK(max_distance(m, uv1, uvr) < 1e-9, "default and SparseLU differ by " << max_distance(m, uv1, uvr));
+  check_run("207k vertices, default again", m, l.bhd, p, uv2, SMP::parameterize(m, p, l.bhd, uv2));
+  SMP_CHECK(max_distance(m, uv1, uv2) == 0., "a second call differs by " << max_distance(m, uv1, uv2));
+  std::cout << "207k vertices: U^1 " << p.report().kept().l2_stretch << ", SparseLU " << reference.report().kept().l2_stretch
+            << ", max distance " << max_distance(m, uv1, uvr) << std::endl;
+}
+#endif
+
 // Meshes with several boundaries: the longest is fixed, every other one is closed by a
 // virtual fan inside the linear system (the user's mesh is not modified).
 void check_mesh_with_holes(const std::string& name, std::size_t boundaries)
@@ -362,5 +393,8 @@ int main()
   check_natural_border();
   check_mannequin_bar();
   check_options_and_visitor();
+#if defined(CGAL_SMP_USE_UMFPACK)
+  check_large_system();
+#endif
   return smp_test::summary();
 }

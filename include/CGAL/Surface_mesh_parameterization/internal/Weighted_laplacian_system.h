@@ -26,6 +26,12 @@ namespace internal {
 // Only the weights change between steps, so the sparsity pattern is built once and analysed
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and
 // v columns together. Iterative solvers start from the previous solution.
+//
+// Memory: the factorization is the peak (on 830k vertices, UMFPACK's factors take 600 MB), so
+// what is not needed then is not held then. With a direct solver, the caller's weights are
+// freed during the factorization and given back divided by their row sum (which changes no
+// solution): the matrix holds them meanwhile, and the few weights of border neighbours are
+// kept aside, to make the right-hand side after the factorization.
 template <typename SolverTraits>
 class Weighted_laplacian_system
 {
@@ -52,26 +58,35 @@ public:
 
     m_diag.resize(std::size_t(n));
     m_slot.assign(dc.ring.size(), -1);
+    std::vector<int> seen(std::size_t(n), -1);
     for(Eigen::Index i = 0; i < n; ++i) {
       m_diag[std::size_t(i)] = slot(i, i);
-      for(int e = dc.ring_begin[i]; e < dc.ring_begin[i + 1]; ++e)
-        if(dc.row[dc.ring[e]] >= 0)
-          m_slot[e] = slot(i, dc.row[dc.ring[e]]);
+      for(int e = dc.ring_begin[i]; e < dc.ring_begin[i + 1]; ++e) {
+        const int j = dc.row[dc.ring[e]];
+        if(j < 0) {
+          m_border_entries.push_back(e);
+          continue;
+        }
+        m_slot[e] = slot(i, j);
+        if(seen[std::size_t(j)] == int(i))
+          m_repeated_neighbour = true; // its entry sums two weights: they cannot be told apart
+        seen[std::size_t(j)] = int(i);
+      }
     }
-    m_B.resize(n, 2);
+    m_border_weight.resize(m_border_entries.size());
     m_X.setZero(n, 2);
   }
 
   // Solves with the weights `w` (one per ring entry) and writes the interior rows of `uv`;
-  // the border entries of `uv` are read. Returns false if the solver fails.
-  bool solve(const std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits)
+  // the border entries of `uv` are read. `w` comes back divided by the weight sums of the rows.
+  // Returns false if the solver fails.
+  bool solve(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits)
   {
     const Eigen::Index n = m_A.rows();
     if(n == 0)
       return true;
     double* values = m_A.valuePtr();
     std::fill(values, values + m_A.nonZeros(), 0.);
-    m_B.setZero();
     for(Eigen::Index i = 0; i < n; ++i) {
       const int begin = m_dc.ring_begin[i], end = m_dc.ring_begin[i + 1];
       double sum = 0.;
@@ -79,35 +94,41 @@ public:
         sum += w[e];
       values[m_diag[std::size_t(i)]] = 1.;
       for(int e = begin; e < end; ++e) {
-        const double c = w[e] / sum;
+        w[e] /= sum;
         if(m_slot[e] >= 0)
-          values[m_slot[e]] -= c; // += keeps a repeated neighbour correct
-        else {
-          m_B(i, 0) += c * uv[m_dc.ring[e]][0];
-          m_B(i, 1) += c * uv[m_dc.ring[e]][1];
-        }
+          values[m_slot[e]] -= w[e]; // -= keeps a repeated neighbour correct
       }
     }
+    for(std::size_t k = 0; k < m_border_entries.size(); ++k)
+      m_border_weight[k] = w[m_border_entries[k]];
 
     Eigen_solver& solver = traits.solver();
+    bool ok = true;
     if constexpr(iterative) {
       // the preconditioner is rebuilt whole: Eigen 3.4's IncompleteLUT leaves its status
       // unset after analyzePattern() alone
       solver.compute(m_A);
-      if(solver.info() != Eigen::Success)
-        return false;
-      m_X = solver.solveWithGuess(m_B, m_X);
+      ok = solver.info() == Eigen::Success;
+      if(ok)
+        m_X = solver.solveWithGuess(right_hand_side(uv), m_X);
     } else {
       if(!m_analysed) {
         analyze_pattern(solver, m_A);
         m_analysed = true;
       }
+      const bool hand_back = !m_repeated_neighbour;
+      if(hand_back)
+        std::vector<double>().swap(w);
+      m_X.resize(0, 0);
       solver.factorize(m_A);
-      if(solver.info() != Eigen::Success)
-        return false;
-      m_X = solver.solve(m_B);
+      ok = solver.info() == Eigen::Success;
+      if(ok)
+        m_X = solver.solve(right_hand_side(uv));
+      release_numeric(solver);
+      if(hand_back)
+        restore(w);
     }
-    if(solver.info() != Eigen::Success || !m_X.allFinite())
+    if(!ok || solver.info() != Eigen::Success || !m_X.allFinite())
       return false;
     for(Eigen::Index i = 0; i < n; ++i)
       uv[m_dc.interior[i]] = {m_X(i, 0), m_X(i, 1)};
@@ -115,6 +136,36 @@ public:
   }
 
 private:
+  // the border neighbours' share of every row
+  Eigen::MatrixXd right_hand_side(const std::vector<Vec2>& uv) const
+  {
+    Eigen::MatrixXd B = Eigen::MatrixXd::Zero(m_A.rows(), 2);
+    for(std::size_t k = 0; k < m_border_entries.size(); ++k) {
+      const int e = m_border_entries[k];
+      const Eigen::Index i = row_of(e);
+      B(i, 0) += m_border_weight[k] * uv[m_dc.ring[e]][0];
+      B(i, 1) += m_border_weight[k] * uv[m_dc.ring[e]][1];
+    }
+    return B;
+  }
+
+  // the normalized weights, from the matrix and the border weights
+  void restore(std::vector<double>& w) const
+  {
+    w.resize(m_dc.ring.size());
+    const double* values = m_A.valuePtr();
+    for(std::size_t e = 0; e < w.size(); ++e)
+      if(m_slot[e] >= 0)
+        w[e] = -values[m_slot[e]];
+    for(std::size_t k = 0; k < m_border_entries.size(); ++k)
+      w[m_border_entries[k]] = m_border_weight[k];
+  }
+
+  Eigen::Index row_of(int e) const
+  {
+    return Eigen::Index(std::upper_bound(m_dc.ring_begin.begin(), m_dc.ring_begin.end(), e) - m_dc.ring_begin.begin()) - 1;
+  }
+
   // position of entry (i, j) in the value array of the compressed matrix
   int slot(Eigen::Index i, Eigen::Index j) const
   {
@@ -128,7 +179,10 @@ private:
   const Disk_component_base& m_dc;
   Matrix m_A;
   std::vector<int> m_diag, m_slot; // positions in the value array (nonzeros fit an int, as Eigen's indices)
-  Eigen::MatrixXd m_B, m_X;
+  std::vector<int> m_border_entries; // ring entries whose neighbour is on the border
+  std::vector<double> m_border_weight; // their normalized weights
+  Eigen::MatrixXd m_X;
+  bool m_repeated_neighbour = false;
   bool m_analysed = false;
 };
 

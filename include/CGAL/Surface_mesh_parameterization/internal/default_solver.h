@@ -5,8 +5,8 @@
 #define CGAL_SMP_INTERNAL_DEFAULT_SOLVER_H
 
 // The default sparse solver of the package. With CGAL_SMP_USE_UMFPACK defined (the CMake target
-// defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU; else Eigen's SparseLU with
-// COLAMD ordering. On the mannequin head and its Loop refinement, UMFPACK without iterative
+// defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's
+// SparseLU with COLAMD ordering. On the mannequin head and its Loop refinement, UMFPACK without iterative
 // refinement took about 0.6 times the time of SparseLU (benchmark/).
 
 #include <CGAL/Eigen_matrix.h>
@@ -14,7 +14,7 @@
 
 #include <Eigen/SparseLU>
 #if defined(CGAL_SMP_USE_UMFPACK)
-#include <Eigen/UmfPackSupport>
+#include <CGAL/Surface_mesh_parameterization/internal/Umfpack_lu.h>
 #endif
 
 namespace CGAL {
@@ -22,37 +22,62 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 
 #if defined(CGAL_SMP_USE_UMFPACK)
-typedef CGAL::Eigen_solver_traits<Eigen::UmfPackLU<Eigen_sparse_matrix<double>::EigenType> > Default_solver_traits;
+typedef CGAL::Eigen_solver_traits<Umfpack_lu<Eigen_sparse_matrix<double>::EigenType> > Default_solver_traits;
 #else
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType,
                                                   Eigen::COLAMDOrdering<int> > >           Default_solver_traits;
 #endif
 
-// Analyses the pattern of `A`. UMFPACK is told to skip its iterative refinement, which Eigen
-// leaves on and which made each solve several times slower for no gain in accuracy here, and
-// to order with METIS on large systems: METIS needs far fewer flops and less memory than AMD at
-// 200k unknowns and more, but its own cost outweighs that below (at 13k and 52k unknowns AMD
-// made the whole U^opt 1.3-1.5 times faster; AMD also if this UMFPACK has no METIS).
+// Analyses the pattern of `A`. A `UmfPackLU` given by the user is told to skip its iterative
+// refinement and ordered as `Umfpack_lu` orders (see there why).
 template <typename Solver, typename Matrix>
 void analyze_pattern(Solver& solver, const Matrix& A)
 {
   solver.analyzePattern(A);
 }
 
-#if defined(CGAL_SMP_USE_UMFPACK)
-constexpr long metis_threshold = 150000; // unknowns
+// Frees the numeric factorization of a direct solver once it has served, where the solver
+// allows it: it is the bulk of the memory, and the next step factorizes again.
+template <typename Solver>
+void release_numeric(Solver&)
+{ }
 
+// Frees what the solver keeps of the last system, where the solver allows it: the factors of
+// a large mesh should not outlive the call.
+template <typename Solver>
+void release_factors(Solver&)
+{ }
+
+#if defined(CGAL_SMP_USE_UMFPACK)
 template <typename Matrix, typename Eigen_matrix>
 void analyze_pattern(Eigen::UmfPackLU<Eigen_matrix>& solver, const Matrix& A)
 {
   solver.umfpackControl()(UMFPACK_IRSTEP) = 0;
-  solver.umfpackControl()(UMFPACK_ORDERING) =
-    A.rows() < metis_threshold ? UMFPACK_ORDERING_AMD : UMFPACK_ORDERING_METIS;
+  const bool metis = A.rows() >= Umfpack_lu<Eigen_matrix>::metis_threshold;
+  solver.umfpackControl()(UMFPACK_ORDERING) = metis ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
   solver.analyzePattern(A);
-  if(solver.info() != Eigen::Success) {
+  if(metis && solver.info() != Eigen::Success) {
     solver.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_AMD;
     solver.analyzePattern(A);
   }
+}
+
+template <typename Matrix, typename Eigen_matrix>
+void analyze_pattern(Umfpack_lu<Eigen_matrix>& solver, const Matrix& A)
+{
+  solver.analyzePattern(A);
+}
+
+template <typename Eigen_matrix>
+void release_numeric(Umfpack_lu<Eigen_matrix>& solver)
+{
+  solver.release_numeric();
+}
+
+template <typename Eigen_matrix>
+void release_factors(Umfpack_lu<Eigen_matrix>& solver)
+{
+  solver.release();
 }
 #endif
 

@@ -135,19 +135,26 @@ public:
   void vertex_stretch(const Flat_triangles& m, double fallback, std::vector<double>& sigma) const
   {
     const std::size_t nv = m.xyz.size();
-    m_num.assign(nv, 0.);
-    m_den.assign(nv, 0.);
+    std::vector<double> num(nv, 0.), den(nv, 0.);
     for(std::size_t f = 0; f < m.tri.size(); ++f) {
       if(!m_used[f]) continue;
       const Triangle_stretch& t = m_faces[f];
       for(int v : m.tri[f]) {
-        m_num[v] += t.area_3d * t.l2 * t.l2;
-        m_den[v] += t.area_3d;
+        num[v] += t.area_3d * t.l2 * t.l2;
+        den[v] += t.area_3d;
       }
     }
     sigma.resize(nv);
     for(std::size_t v = 0; v < nv; ++v)
-      sigma[v] = m_den[v] > 0. ? std::sqrt(m_num[v] / m_den[v]) : fallback;
+      sigma[v] = den[v] > 0. ? std::sqrt(num[v] / den[v]) : fallback;
+  }
+
+  // Frees the per-face data until the next evaluation (it is not needed while a system is
+  // factorized, when the memory peaks).
+  void release()
+  {
+    std::vector<Triangle_stretch>().swap(m_faces);
+    std::vector<char>().swap(m_used);
   }
 
   const std::vector<Triangle_stretch>& faces() const { return m_faces; }
@@ -156,7 +163,6 @@ public:
 private:
   std::vector<Triangle_stretch> m_faces;
   std::vector<char> m_used;
-  mutable std::vector<double> m_num, m_den;
 };
 
 // The paper's edge, angle and area distortions (sums over edges, face corners and faces).
