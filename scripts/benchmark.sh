@@ -37,7 +37,9 @@ program="$build/benchmark/Stretch_minimizing_parameterization/benchmark_paramete
 
 # --- results directory: only the files written here are replaced ---------------------------
 mkdir -p "$results"
-rm -f "$results"/*.md "$results"/*.csv "$results"/*.dat "$results"/*.png "$results"/run.log
+# (other_meshes.md is written by check-other-meshes.sh and kept)
+find "$results" -maxdepth 1 -type f \( -name '*.md' -o -name '*.csv' -o -name '*.dat' -o -name '*.png' \
+     -o -name run.log \) ! -name other_meshes.md -delete
 
 # --- the machine --------------------------------------------------------------------------
 cache="$build/CMakeCache.txt"
