@@ -75,6 +75,7 @@ const char* usage =
   "  --polish N            then at most N Newton steps on Sander's stretch energy (flip-free)\n"
   "  --polish-time S       time budget of the polish in seconds\n"
   "  --free-border         let the polish move the border (never crossing itself)\n"
+  "  --threads N           threads of u0/u1/uopt on large meshes (default 0: one per core)\n"
   "  --cut                 open a closed genus-0 mesh along a seam first\n"
   "  --charts              parameterize each connected component into its own chart\n"
   "  --size PX             picture size in pixels (default 800)\n"
@@ -87,7 +88,7 @@ struct Options
   std::string input, output, method = "uopt", border = "square", preset = "paper";
   std::string start, update, rule; // empty: the preset's
   double eta = 1., polish_time = 0.;
-  int iterations = 20, polish = 0, size = 800, up = 2;
+  int iterations = 20, polish = 0, size = 800, up = 2, threads = 0;
   bool cut = false, charts = false, pictures = true, quiet = false, free_border = false;
 };
 
@@ -138,6 +139,11 @@ Options parse(int argc, char** argv)
       const double n = number(a, value(i));
       if(n < 0 || n > 10000 || n != std::floor(n)) die("option --iterations: give a whole number from 0 to 10000", 2);
       o.iterations = int(n);
+    }
+    else if(a == "--threads") {
+      const double n = number(a, value(i));
+      if(n < 0 || n > 1024 || n != std::floor(n)) die("option --threads: give a whole number from 0 to 1024", 2);
+      o.threads = int(n);
     }
     else if(a == "--size") {
       const double n = number(a, value(i));
@@ -370,7 +376,8 @@ int main(int argc, char** argv)
     auto np = SMP::parameters::start_weights(start, SMP::parameters::stretch_update(update,
               SMP::parameters::step_rule(rule, SMP::parameters::polish_iterations(polish,
               SMP::parameters::polish_time_budget(o.polish_time, SMP::parameters::free_border(o.free_border,
-              SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress)))))));
+              SMP::parameters::number_of_threads(unsigned(o.threads),
+              SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress))))))));
     SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
     run_parameterizer(mesh, bhd, p, uv, o.charts, run);
     run.kept_step = p.report().kept_step;

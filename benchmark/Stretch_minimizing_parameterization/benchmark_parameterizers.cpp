@@ -281,6 +281,8 @@ std::vector<Method> all_methods()
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 1.);
      }},
+    {"uopt_one_thread", "(f_h) U^opt, eta = 1, on one thread (number_of_threads(1))", square, minimizer_solver,
+     [](Context& c, Child_result& r) { return run_minimizer(c, r, SMP::parameters::number_of_threads(1u)); }},
     {"uopt_eta05", "U^opt, eta = 0.5", square, minimizer_solver,
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 0.5);
@@ -1079,6 +1081,10 @@ private:
     line("U^opt time / CGAL Iterative_authalic time (its time includes its debug I/O)",
          [&](std::size_t k) {
            return ratio(median_of(k, "f_uopt"), median_of(k, "cgal_iterative_authalic"), k, "cgal_iterative_authalic");
+         });
+    line("U^opt time on all cores / on one thread (number_of_threads(1))",
+         [&](std::size_t k) {
+           return ratio(median_of(k, "f_uopt"), median_of(k, "uopt_one_thread"), k, "uopt_one_thread");
          });
     line("U^opt steps", [&](std::size_t k) {
       const std::size_t fo = method_index("f_uopt");

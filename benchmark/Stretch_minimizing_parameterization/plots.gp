@@ -12,11 +12,11 @@ set grid
 set key outside below center Left reverse maxrows 7 height 1.5
 set style data linespoints
 set pointsize 1.2
-# 14 distinct line types (the default cycle repeats after 8); line i is the i-th block
-colors = "#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #000000 #8c564b #e377c2 #7f7f7f #bcbd22 #17becf #ff9896 #006400 #4b0082"
-do for [i=1:14] {
+# 17 distinct line types (the default cycle repeats after 8); line i is the i-th block
+colors = "#1f77b4 #ff7f0e #2ca02c #d62728 #9467bd #000000 #8c564b #e377c2 #7f7f7f #bcbd22 #17becf #ff9896 #006400 #4b0082 #808000 #00ced1 #8b0000"
+do for [i=1:17] {
   point = i % 13 + 1
-  if (i <= 7) { set linetype i lc rgb word(colors, i) lw 2 pt point dt solid } \
+  if (i <= 8) { set linetype i lc rgb word(colors, i) lw 2 pt point dt solid } \
   else { set linetype i lc rgb word(colors, i) lw 2 pt point dt 2 }
 }
 

@@ -171,6 +171,7 @@ void check_combinations(const std::string& name)
           if(h >= 2 && rule == SMP::Step_rule::HALVE_ETA) {
             const SMP::Stretch_minimizing_step& prev = r.report.history[h - 1];
             SMP_CHECK(s.eta == prev.eta || s.eta == prev.eta / 2., what << ": eta went from " << prev.eta << " to " << s.eta);
+            SMP_CHECK(s.eta >= 0.25, what << ": eta " << s.eta << " below a quarter of its start");
           }
         }
         SMP_CHECK(r.report.kept().l2_stretch == best, what << ": kept " << r.report.kept().l2_stretch << ", best " << best);

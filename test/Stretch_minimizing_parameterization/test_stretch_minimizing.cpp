@@ -3,8 +3,8 @@
 //
 // The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
 // minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
-// initializers and solvers, the default solver on a large system, and the quality bar of the
-// paper's Mannequin head.
+// initializers and solvers, the default solver on a large system, the result on several threads,
+// and the quality bar of the paper's Mannequin head.
 
 #include "smp_test_util.h"
 
@@ -25,6 +25,7 @@
 #include <Eigen/SparseLU>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <string>
@@ -223,6 +224,57 @@ void check_options_and_visitor()
   SMP_CHECK(max_distance(m, uvi, uvd) < 1e-7, "iterative and direct differ by " << max_distance(m, uvi, uvd));
 }
 
+// parallel_for covers [0, n) once, in chunks of at least the grain, whatever the thread count
+void check_parallel_for()
+{
+  for(std::size_t n : {0, 1, 5, 100, 1001})
+    for(unsigned int threads : {1u, 2u, 3u, 8u})
+      for(std::size_t grain : {1, 7, 400}) {
+        std::vector<int> hits(n, 0); // each index is written by one chunk only
+        std::vector<std::pair<std::size_t, std::size_t> > chunks(threads + 1, {0, 0});
+        std::atomic<unsigned int> calls(0);
+        SMP::internal::parallel_for(n, threads, grain, [&](std::size_t begin, std::size_t end) {
+          const unsigned int k = calls++;
+          if(k < chunks.size())
+            chunks[k] = {begin, end};
+          for(std::size_t i = begin; i < end; ++i)
+            ++hits[i];
+        });
+        SMP_CHECK(std::all_of(hits.begin(), hits.end(), [](int h) { return h == 1; }),
+                  "parallel_for missed or repeated an index (n " << n << ", threads " << threads << ")");
+        SMP_CHECK(calls >= 1 && calls <= threads, "parallel_for made " << calls << " chunks for " << threads << " threads");
+        for(unsigned int k = 0; calls > 1 && k < calls; ++k)
+          SMP_CHECK(chunks[k].second - chunks[k].first >= grain, "a chunk below the grain (n " << n << ")");
+      }
+}
+
+// The loops over faces, ring entries and rows, and the two solves, run on several threads on a
+// mesh this large (103k faces): the maps and the histories must be those of one thread, bit for
+// bit, with the paper's rule and with the preset that updates the weights per edge.
+void check_threads()
+{
+  Loaded l = load("mannequin-devil.off");
+  CGAL::Subdivision_method_3::Loop_subdivision(l.mesh, CGAL::parameters::number_of_iterations(1));
+  Mesh& m = l.mesh;
+  l.bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
+  for(bool lowest : {false, true}) {
+    const auto preset = lowest ? SMP::Stretch_minimizing_preset::LOWEST_STRETCH : SMP::Stretch_minimizing_preset::PAPER;
+    Default_smp one(SMP::parameters::number_of_threads(1, SMP::parameters::preset(preset)).number_of_iterations(3));
+    Default_smp three(SMP::parameters::number_of_threads(3, SMP::parameters::preset(preset)).number_of_iterations(3));
+    UV_map uv1 = new_uv(m, "v:uv_one"), uv3 = new_uv(m, "v:uv_three");
+    check_run("52k vertices, 1 thread", m, l.bhd, one, uv1, SMP::parameterize(m, one, l.bhd, uv1));
+    check_run("52k vertices, 3 threads", m, l.bhd, three, uv3, SMP::parameterize(m, three, l.bhd, uv3));
+    SMP_CHECK(max_distance(m, uv1, uv3) == 0., "3 threads differ from 1 by " << max_distance(m, uv1, uv3));
+    const auto& h1 = one.report().history;
+    const auto& h3 = three.report().history;
+    SMP_CHECK(h1.size() == h3.size(), "3 threads made " << h3.size() << " steps, 1 thread " << h1.size());
+    for(std::size_t h = 0; h < h1.size() && h < h3.size(); ++h)
+      SMP_CHECK(h1[h].l2_stretch == h3[h].l2_stretch && h1[h].eta == h3[h].eta, "step " << h << " differs");
+    m.remove_property_map(uv1);
+    m.remove_property_map(uv3);
+  }
+}
+
 #if defined(CGAL_SMP_USE_UMFPACK)
 // Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from
 // the symbolic estimate and then from the last factorization, hands memory back between steps
@@ -393,6 +445,8 @@ int main()
   check_natural_border();
   check_mannequin_bar();
   check_options_and_visitor();
+  check_parallel_for();
+  check_threads();
 #if defined(CGAL_SMP_USE_UMFPACK)
   check_large_system();
 #endif

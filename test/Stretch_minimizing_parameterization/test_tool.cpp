@@ -94,7 +94,7 @@ void check_outputs()
 {
   const std::string input = smp_test::data_file("nefertiti.off");
   fs::remove_all("out_nefertiti");
-  const Result r = run(input + " -o out_nefertiti --size 200 --eta 0.5 --iterations 7");
+  const Result r = run(input + " -o out_nefertiti --size 200 --eta 0.5 --iterations 7 --threads 2");
   SMP_CHECK(r.status == 0, "tool failed: " << r.err);
   SMP_CHECK(r.out.find("step 1") != std::string::npos, "no progress line: " << r.out);
   SMP_CHECK(run(input + " -o out_quiet -q --no-pictures").out.empty(), "--quiet still prints");
@@ -212,6 +212,7 @@ void check_errors()
   check_error("two components", "two.off", "--charts");
   check_error("eta out of range", smp_test::data_file("nefertiti.off") + " --eta 2", "eta");
   check_error("iterations not a number", smp_test::data_file("nefertiti.off") + " --iterations many", "iterations");
+  check_error("threads not a whole number", smp_test::data_file("nefertiti.off") + " --threads 1.5", "threads");
   check_error("unknown method", smp_test::data_file("nefertiti.off") + " -m best", "method");
   check_error("unknown option", smp_test::data_file("nefertiti.off") + " --fast", "option");
   check_error("unknown preset", smp_test::data_file("nefertiti.off") + " --preset best", "preset");

@@ -35,7 +35,7 @@ enum class Step_rule
 {
   STOP_AT_INCREASE, ///< stop and keep the best step (the paper's rule)
   HALVE_ETA         ///< drop the step, halve \f$ \eta \f$ and step again from the best parameterization;
-                    ///< stop when \f$ \eta \f$ would fall below 1/16 of its initial value
+                    ///< stop when \f$ \eta \f$ would fall below 1/4 of its initial value
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef

@@ -25,6 +25,7 @@ struct Stretch_minimizing_settings
   unsigned int polish_iterations = 0;
   double polish_seconds = 0.;
   bool free_border = false;
+  unsigned int threads = 0; // 0: one per core
   bool verbose = false;
   Step_visitor visitor;
 
@@ -63,6 +64,7 @@ Stretch_minimizing_settings read_settings(const NamedParameters& np, Stretch_min
   s.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.polish_iterations);
   s.polish_seconds = choose_parameter(get_parameter(np, internal_np::polish_time_budget), s.polish_seconds);
   s.free_border = choose_parameter(get_parameter(np, internal_np::free_border), s.free_border);
+  s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), s.threads);
   s.verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), s.verbose);
   Step_visitor v = make_step_visitor(get_parameter(np, CGAL::internal_np::visitor));
   if(v)

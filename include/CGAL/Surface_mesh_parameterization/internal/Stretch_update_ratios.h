@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -50,27 +51,33 @@ public:
   // w_out[e] = w_in[e] / ratio_e^eta for every ring entry e, where ratio_e is the stretch of
   // the entry (from the last evaluation of `stretch`) over `rms`. `w_out` may be `w_in`.
   void update(const Disk_component_base& dc, const Flat_stretch& stretch, double rms, double eta,
-              const std::vector<double>& w_in, std::vector<double>& w_out)
+              const std::vector<double>& w_in, std::vector<double>& w_out, unsigned int threads = 1)
   {
     stretch.vertex_stretch(dc.flat, rms, m_sigma);
     w_out.resize(w_in.size());
     if(m_kind == Stretch_update::VERTEX) {
       // one power per vertex rather than per ring entry
-      for(double& s : m_sigma)
-        s = std::pow(s / rms, -eta);
-      for(std::size_t e = 0; e < w_in.size(); ++e)
-        w_out[e] = w_in[e] * m_sigma[dc.ring[e]];
+      parallel_for(m_sigma.size(), threads, parallel_grain, [&](std::size_t begin, std::size_t end) {
+        for(std::size_t v = begin; v < end; ++v)
+          m_sigma[v] = std::pow(m_sigma[v] / rms, -eta);
+      });
+      parallel_for(w_in.size(), threads, parallel_grain, [&](std::size_t begin, std::size_t end) {
+        for(std::size_t e = begin; e < end; ++e)
+          w_out[e] = w_in[e] * m_sigma[dc.ring[e]];
+      });
       return;
     }
-    for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
-      const int i = dc.interior[r];
-      for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
-        const int j = dc.ring[e];
-        const double s = m_kind == Stretch_update::SYMMETRIC ? 0.5 * (m_sigma[i] + m_sigma[j])
-                                                             : edge_stretch(e, stretch, m_sigma[j]);
-        w_out[e] = w_in[e] * std::pow(s / rms, -eta);
+    parallel_for(dc.number_of_rows(), threads, parallel_grain, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t r = begin; r < end; ++r) {
+        const int i = dc.interior[r];
+        for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
+          const int j = dc.ring[e];
+          const double s = m_kind == Stretch_update::SYMMETRIC ? 0.5 * (m_sigma[i] + m_sigma[j])
+                                                               : edge_stretch(e, stretch, m_sigma[j]);
+          w_out[e] = w_in[e] * std::pow(s / rms, -eta);
+        }
       }
-    }
+    });
   }
 
 private:

@@ -22,9 +22,14 @@
 //   stretch evaluation and the weight update that follow would otherwise add to them), and
 //   `release()` frees the analysis once the iteration is over.
 
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
+
+#include <Eigen/Dense>
 #include <Eigen/UmfPackSupport>
 
 #include <algorithm>
+#include <type_traits>
+#include <vector>
 
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -79,6 +84,38 @@ public:
     Base::factorize(A);
     if(this->info() == Eigen::Success && this->m_umfpackInfo(UMFPACK_VARIABLE_PEAK) > 0.)
       m_work_units = this->m_umfpackInfo(UMFPACK_VARIABLE_PEAK);
+  }
+
+  // X = A^{-1} B after `factorize()`, the columns on up to `threads` threads: UMFPACK's solve
+  // only reads the factors, and each column gets its own workspace and report. False if a
+  // solve fails.
+  bool solve_columns(const Eigen::MatrixXd& B, Eigen::MatrixXd& X, unsigned int threads) const
+  {
+    typedef typename Base::StorageIndex Index;
+    if constexpr(!std::is_same<typename Base::Scalar, double>::value || !std::is_same<Index, int>::value) {
+      X = this->solve(B);
+      return this->info() == Eigen::Success;
+    } else {
+      const Eigen::Index n = B.rows(), columns = B.cols();
+      X.resize(n, columns);
+      if(!this->m_numeric || this->mp_matrix.rows() != n)
+        return false;
+      // W holds n values without iterative refinement, 5n with it
+      const Eigen::Index w_size = this->m_control(UMFPACK_IRSTEP) > 0. ? 5 * n : n;
+      std::vector<char> ok(std::size_t(columns), 0);
+      parallel_for(std::size_t(columns), n >= Eigen::Index(parallel_grain) ? threads : 1u, 1,
+                   [&](std::size_t begin, std::size_t end) {
+        std::vector<int> wi(static_cast<std::size_t>(n));
+        std::vector<double> w(static_cast<std::size_t>(w_size));
+        double info[UMFPACK_INFO];
+        for(std::size_t j = begin; j < end; ++j)
+          ok[j] = umfpack_di_wsolve(UMFPACK_A, this->mp_matrix.outerIndexPtr(), this->mp_matrix.innerIndexPtr(),
+                                    this->mp_matrix.valuePtr(), X.col(Eigen::Index(j)).data(),
+                                    B.col(Eigen::Index(j)).data(), this->m_numeric, this->m_control.data(),
+                                    info, wi.data(), w.data()) == UMFPACK_OK;
+      });
+      return std::find(ok.begin(), ok.end(), 0) == ok.end();
+    }
   }
 
   // Frees the numeric factorization; the next use starts with `factorize()`.

@@ -6,6 +6,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
@@ -79,26 +80,33 @@ public:
 
   // Solves with the weights `w` (one per ring entry) and writes the interior rows of `uv`;
   // the border entries of `uv` are read. `w` comes back divided by the weight sums of the rows.
+  // The rows are filled, and the u and v columns solved, on up to `threads` threads.
   // Returns false if the solver fails.
-  bool solve(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits)
+  bool solve(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads = 1)
   {
     const Eigen::Index n = m_A.rows();
     if(n == 0)
       return true;
     double* values = m_A.valuePtr();
-    std::fill(values, values + m_A.nonZeros(), 0.);
-    for(Eigen::Index i = 0; i < n; ++i) {
-      const int begin = m_dc.ring_begin[i], end = m_dc.ring_begin[i + 1];
-      double sum = 0.;
-      for(int e = begin; e < end; ++e)
-        sum += w[e];
-      values[m_diag[std::size_t(i)]] = 1.;
-      for(int e = begin; e < end; ++e) {
-        w[e] /= sum;
-        if(m_slot[e] >= 0)
-          values[m_slot[e]] -= w[e]; // -= keeps a repeated neighbour correct
+    // each row writes its own entries of the matrix (a neighbour repeated in a ring is in the
+    // same row): no two threads write the same value
+    parallel_for(std::size_t(n), threads, parallel_grain, [&](std::size_t first, std::size_t last) {
+      for(std::size_t i = first; i < last; ++i) {
+        const int begin = m_dc.ring_begin[i], end = m_dc.ring_begin[i + 1];
+        double sum = 0.;
+        for(int e = begin; e < end; ++e)
+          sum += w[e];
+        values[m_diag[i]] = 1.;
+        for(int e = begin; e < end; ++e)
+          if(m_slot[e] >= 0)
+            values[m_slot[e]] = 0.;
+        for(int e = begin; e < end; ++e) {
+          w[e] /= sum;
+          if(m_slot[e] >= 0)
+            values[m_slot[e]] -= w[e]; // -= keeps a repeated neighbour correct
+        }
       }
-    }
+    });
     for(std::size_t k = 0; k < m_border_entries.size(); ++k)
       m_border_weight[k] = w[m_border_entries[k]];
 
@@ -121,12 +129,10 @@ public:
         std::vector<double>().swap(w);
       m_X.resize(0, 0);
       solver.factorize(m_A);
-      ok = solver.info() == Eigen::Success;
-      if(ok)
-        m_X = solver.solve(right_hand_side(uv));
+      ok = solver.info() == Eigen::Success && solve_columns(solver, right_hand_side(uv), m_X, threads);
       release_numeric(solver);
       if(hand_back)
-        restore(w);
+        restore(w, threads);
     }
     if(!ok || solver.info() != Eigen::Success || !m_X.allFinite())
       return false;
@@ -150,13 +156,15 @@ private:
   }
 
   // the normalized weights, from the matrix and the border weights
-  void restore(std::vector<double>& w) const
+  void restore(std::vector<double>& w, unsigned int threads) const
   {
     w.resize(m_dc.ring.size());
     const double* values = m_A.valuePtr();
-    for(std::size_t e = 0; e < w.size(); ++e)
-      if(m_slot[e] >= 0)
-        w[e] = -values[m_slot[e]];
+    parallel_for(w.size(), threads, parallel_grain, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t e = begin; e < end; ++e)
+        if(m_slot[e] >= 0)
+          w[e] = -values[m_slot[e]];
+    });
     for(std::size_t k = 0; k < m_border_entries.size(); ++k)
       w[m_border_entries[k]] = m_border_weight[k];
   }

@@ -12,6 +12,7 @@
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
 
+#include <Eigen/Dense>
 #include <Eigen/SparseLU>
 #if defined(CGAL_SMP_USE_UMFPACK)
 #include <CGAL/Surface_mesh_parameterization/internal/Umfpack_lu.h>
@@ -34,6 +35,15 @@ template <typename Solver, typename Matrix>
 void analyze_pattern(Solver& solver, const Matrix& A)
 {
   solver.analyzePattern(A);
+}
+
+// X = A^{-1} B with the factorization of a direct solver; `Umfpack_lu` solves the columns in
+// parallel. False if the solve fails.
+template <typename Solver>
+bool solve_columns(const Solver& solver, const Eigen::MatrixXd& B, Eigen::MatrixXd& X, unsigned int /* threads */)
+{
+  X = solver.solve(B);
+  return solver.info() == Eigen::Success;
 }
 
 // Frees the numeric factorization of a direct solver once it has served, where the solver
@@ -66,6 +76,13 @@ template <typename Matrix, typename Eigen_matrix>
 void analyze_pattern(Umfpack_lu<Eigen_matrix>& solver, const Matrix& A)
 {
   solver.analyzePattern(A);
+}
+
+template <typename Eigen_matrix>
+bool solve_columns(const Umfpack_lu<Eigen_matrix>& solver, const Eigen::MatrixXd& B, Eigen::MatrixXd& X,
+                   unsigned int threads)
+{
+  return solver.solve_columns(B, X, threads);
 }
 
 template <typename Eigen_matrix>

@@ -8,6 +8,7 @@
 // measures of stretch_measures.h both run on this form, so there is one implementation of
 // every formula.
 
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/shape_preserving_weights.h>
 
 #include <algorithm>
@@ -81,19 +82,24 @@ public:
   // Relative size below which a triangle area counts as zero.
   static constexpr double degenerate_ratio = 1e-12;
 
-  // Evaluates every face; faces degenerate in 3D or in uv are marked and left out of the
-  // summary and of the vertex stretch, so that they cannot turn it into inf or NaN.
-  Flat_stretch_summary evaluate(const Flat_triangles& m, const std::vector<Vec2>& uv)
+  // Evaluates every face (on `threads` threads); faces degenerate in 3D or in uv are marked and
+  // left out of the summary and of the vertex stretch, so that they cannot turn it into inf or NaN.
+  Flat_stretch_summary evaluate(const Flat_triangles& m, const std::vector<Vec2>& uv,
+                                unsigned int threads = 1)
   {
     const std::size_t nf = m.tri.size();
     m_faces.resize(nf);
     m_used.assign(nf, 0);
+    parallel_for(nf, threads, parallel_grain, [&](std::size_t begin, std::size_t end) {
+      for(std::size_t f = begin; f < end; ++f) {
+        const Triangle& t = m.tri[f];
+        m_faces[f] = triangle_stretch(m.xyz[t[0]], m.xyz[t[1]], m.xyz[t[2]], uv[t[0]], uv[t[1]], uv[t[2]]);
+      }
+    });
     double sum_a3 = 0., sum_a2 = 0.;
-    for(std::size_t f = 0; f < nf; ++f) {
-      const Triangle& t = m.tri[f];
-      m_faces[f] = triangle_stretch(m.xyz[t[0]], m.xyz[t[1]], m.xyz[t[2]], uv[t[0]], uv[t[1]], uv[t[2]]);
-      if(std::isfinite(m_faces[f].area_3d)) sum_a3 += m_faces[f].area_3d;
-      if(std::isfinite(m_faces[f].area_uv)) sum_a2 += std::abs(m_faces[f].area_uv);
+    for(const Triangle_stretch& t : m_faces) {
+      if(std::isfinite(t.area_3d)) sum_a3 += t.area_3d;
+      if(std::isfinite(t.area_uv)) sum_a2 += std::abs(t.area_uv);
     }
     const double tol3 = degenerate_ratio * sum_a3 / double((std::max)(nf, std::size_t(1)));
     const double tol2 = degenerate_ratio * sum_a2 / double((std::max)(nf, std::size_t(1)));

@@ -19,6 +19,7 @@ enum preset_t { preset };
 enum polish_iterations_t { polish_iterations };
 enum polish_time_budget_t { polish_time_budget };
 enum free_border_t { free_border };
+enum number_of_threads_t { number_of_threads };
 } // namespace internal_np
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -54,6 +55,7 @@ CGAL_SMP_ADD_NAMED_PARAMETER(preset)
 CGAL_SMP_ADD_NAMED_PARAMETER(polish_iterations)
 CGAL_SMP_ADD_NAMED_PARAMETER(polish_time_budget)
 CGAL_SMP_ADD_NAMED_PARAMETER(free_border)
+CGAL_SMP_ADD_NAMED_PARAMETER(number_of_threads)
 #undef CGAL_SMP_ADD_NAMED_PARAMETER
 #else
 /// Exponent \f$ \eta \f$ of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$, in \f$ (0, 1] \f$.
@@ -72,6 +74,7 @@ template <typename T> unspecified_type polish_iterations(const T& value);
 template <typename T> unspecified_type polish_time_budget(const T& value);
 /// If `true`, the polish stage frees the border.
 template <typename T> unspecified_type free_border(const T& value);
+template <typename T> unspecified_type number_of_threads(const T& value);
 /// Each function above also takes named parameters as a second argument and puts itself in front of them.
 #endif
 

@@ -1,0 +1,65 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_PARALLEL_FOR_H
+#define CGAL_SMP_INTERNAL_PARALLEL_FOR_H
+
+// The loops of the iteration over faces, ring entries and columns, on several cores with
+// std::thread (no dependency beyond the standard library). Each item writes only its own
+// outputs and every sum is taken afterwards in a fixed order, so that the result does not
+// depend on the number of threads, bit for bit.
+
+#include <algorithm>
+#include <cstddef>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// Fewest items (faces, ring entries, rows) a thread takes in the loops of the iteration.
+constexpr std::size_t parallel_grain = 16384;
+
+// Number of threads for `requested` (0: one per core).
+inline unsigned int thread_count(unsigned int requested)
+{
+  if(requested > 0)
+    return requested;
+  const unsigned int cores = std::thread::hardware_concurrency();
+  return cores > 0 ? cores : 1;
+}
+
+// Calls `f(begin, end)` on contiguous chunks covering [0, n), on at most `threads` threads,
+// with at least `min_chunk` items a chunk (starting a thread costs tens of microseconds).
+// `f` must not throw. If a thread cannot be started, its chunk runs on the calling thread.
+template <typename Function>
+void parallel_for(std::size_t n, unsigned int threads, std::size_t min_chunk, const Function& f)
+{
+  const std::size_t chunks = (std::min)(std::size_t(threads), n / (std::max)(min_chunk, std::size_t(1)));
+  if(chunks <= 1) {
+    f(std::size_t(0), n);
+    return;
+  }
+  std::vector<std::thread> pool;
+  pool.reserve(chunks - 1);
+  std::size_t k = 1;
+  try {
+    for(; k < chunks; ++k)
+      pool.emplace_back(f, n * k / chunks, n * (k + 1) / chunks);
+  } catch(const std::system_error&) {
+    // no more threads: the remaining chunks run here
+  }
+  f(std::size_t(0), n / chunks);
+  for(std::size_t j = k; j < chunks; ++j)
+    f(n * j / chunks, n * (j + 1) / chunks);
+  for(std::thread& t : pool)
+    t.join();
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_PARALLEL_FOR_H
