@@ -102,17 +102,18 @@ public:
         return false;
       // W holds n values without iterative refinement, 5n with it
       const Eigen::Index w_size = this->m_control(UMFPACK_IRSTEP) > 0. ? 5 * n : n;
+      // workspaces allocated here: the threads must not throw
       std::vector<char> ok(std::size_t(columns), 0);
+      std::vector<std::vector<int> > wi(std::size_t(columns), std::vector<int>(static_cast<std::size_t>(n)));
+      std::vector<std::vector<double> > w(std::size_t(columns), std::vector<double>(static_cast<std::size_t>(w_size)));
       parallel_for(std::size_t(columns), n >= Eigen::Index(parallel_grain) ? threads : 1u, 1,
                    [&](std::size_t begin, std::size_t end) {
-        std::vector<int> wi(static_cast<std::size_t>(n));
-        std::vector<double> w(static_cast<std::size_t>(w_size));
         double info[UMFPACK_INFO];
         for(std::size_t j = begin; j < end; ++j)
           ok[j] = umfpack_di_wsolve(UMFPACK_A, this->mp_matrix.outerIndexPtr(), this->mp_matrix.innerIndexPtr(),
                                     this->mp_matrix.valuePtr(), X.col(Eigen::Index(j)).data(),
                                     B.col(Eigen::Index(j)).data(), this->m_numeric, this->m_control.data(),
-                                    info, wi.data(), w.data()) == UMFPACK_OK;
+                                    info, wi[j].data(), w[j].data()) == UMFPACK_OK;
       });
       return std::find(ok.begin(), ok.end(), 0) == ok.end();
     }
