@@ -104,7 +104,7 @@ namespace Surface_mesh_parameterization {
 ///         AMD ordering below 150,000 unknowns and METIS above, without UMFPACK's iterative
 ///         refinement, and frugal with memory: its work area is sized from the symbolic analysis
 ///         and then from the previous factorization, and its factors are freed as soon as they
-///         have served (on 830k vertices the peak memory of a call went from 1404 to 1092 MiB, benchmark/results).
+///         have served (on 830k vertices the peak memory of a call went from 1404 to 1093 MiB, benchmark/results).
 ///         A `Eigen::UmfPackLU` given here is ordered and run without refinement the same way.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
