@@ -74,6 +74,8 @@ template <typename T> unspecified_type polish_iterations(const T& value);
 template <typename T> unspecified_type polish_time_budget(const T& value);
 /// If `true`, the polish stage frees the border.
 template <typename T> unspecified_type free_border(const T& value);
+/// Number of threads of the per-face, per-vertex and per-column loops (0: all cores, the default;
+/// 1: none started). The result does not depend on it.
 template <typename T> unspecified_type number_of_threads(const T& value);
 /// Each function above also takes named parameters as a second argument and puts itself in front of them.
 #endif
