@@ -68,10 +68,12 @@ const char* usage =
   "  --border B            square (default, CGAL's corners), ear-aware (square, corners that\n"
   "                        avoid flattened border faces), circle, natural (LSCM's border)\n"
   "  --preset P            paper (default: the paper's method) or lowest (clamped cotangent\n"
-  "                        start, edge update, halving eta: lower stretch for about twice the time)\n"
+  "                        start, edge update, 30 descent steps: lower stretch for 2-3 times the time)\n"
   "  --start S             start weights of u0/u1/uopt: floater, mvc or cot (clamped cotangent)\n"
   "  --update U            stretch that divides the weights: vertex, symmetric or edge\n"
   "  --rule R              when a step does not lower the stretch: stop or halve (eta)\n"
+  "  --descent N           then at most N cheap descent steps on Sander's stretch energy\n"
+  "                        (flip-free; default: the preset's, 0 or 30)\n"
   "  --polish N            then at most N Newton steps on Sander's stretch energy (flip-free)\n"
   "  --polish-time S       time budget of the polish in seconds\n"
   "  --free-border         let the polish move the border (never crossing itself)\n"
@@ -88,7 +90,7 @@ struct Options
   std::string input, output, method = "uopt", border = "square", preset = "paper";
   std::string start, update, rule; // empty: the preset's
   double eta = 1., polish_time = 0.;
-  int iterations = 20, polish = 0, size = 800, up = 2, threads = 0;
+  int iterations = 20, descent = -1, polish = 0, size = 800, up = 2, threads = 0; // descent < 0: the preset's
   bool cut = false, charts = false, pictures = true, quiet = false, free_border = false;
 };
 
@@ -124,6 +126,11 @@ Options parse(int argc, char** argv)
     else if(a == "--start") o.start = value(i);
     else if(a == "--update") o.update = value(i);
     else if(a == "--rule") o.rule = value(i);
+    else if(a == "--descent") {
+      const double n = number(a, value(i));
+      if(n < 0 || n > 100000 || n != std::floor(n)) die("option --descent: give a whole number from 0 to 100000", 2);
+      o.descent = int(n);
+    }
     else if(a == "--polish") {
       const double n = number(a, value(i));
       if(n < 0 || n > 100000 || n != std::floor(n)) die("option --polish: give a whole number from 0 to 100000", 2);
@@ -173,7 +180,8 @@ Options parse(int argc, char** argv)
     die("unknown preset '" + o.preset + "' (paper, lowest)", 2);
   if(o.start.empty()) o.start = o.preset == "lowest" ? "cot" : "floater";
   if(o.update.empty()) o.update = o.preset == "lowest" ? "edge" : "vertex";
-  if(o.rule.empty()) o.rule = o.preset == "lowest" ? "halve" : "stop";
+  if(o.rule.empty()) o.rule = "stop";
+  if(o.descent < 0) o.descent = o.preset == "lowest" ? int(SMP::lowest_stretch_descent_iterations) : 0;
   if(o.start != "floater" && o.start != "mvc" && o.start != "cot")
     die("unknown start '" + o.start + "' (floater, mvc, cot)", 2);
   if(o.update != "vertex" && o.update != "symmetric" && o.update != "edge")
@@ -182,8 +190,8 @@ Options parse(int argc, char** argv)
     die("unknown rule '" + o.rule + "' (stop, halve)", 2);
   if(o.polish_time > 0. && o.polish == 0)
     o.polish = 100000; // a time budget alone: as many steps as it allows
-  if(o.free_border && o.polish == 0)
-    die("--free-border is a mode of the polish: give --polish N or --polish-time S too", 2);
+  if(o.free_border && o.polish == 0 && o.descent == 0)
+    die("--free-border is a mode of the polish: give --descent N, --polish N or --polish-time S too", 2);
   if(!(o.eta > 0. && o.eta <= 1.))
     die("option --eta must be in (0, 1]", 2);
   if(o.output.empty())
@@ -358,7 +366,7 @@ int main(int argc, char** argv)
     if(!s.polish)
       run.history.push_back(s);
     if(!o.quiet)
-      std::cout << (s.polish ? "polish step " : "step ") << s.step << "  L2 stretch " << std::setprecision(6) << s.l2_stretch << "  Linf "
+      std::cout << (s.descent ? "descent step " : s.polish ? "polish step " : "step ") << s.step << "  L2 stretch " << std::setprecision(6) << s.l2_stretch << "  Linf "
                 << s.linf_stretch << "  " << std::setprecision(3) << s.seconds << " s" << std::endl;
   };
   const auto t0 = std::chrono::steady_clock::now();
@@ -373,11 +381,13 @@ int main(int argc, char** argv)
                                                                : SMP::Stretch_update::VERTEX;
     const SMP::Step_rule rule = o.rule == "halve" ? SMP::Step_rule::HALVE_ETA : SMP::Step_rule::STOP_AT_INCREASE;
     const unsigned int polish = o.method == "uopt" ? unsigned(o.polish) : 0u;
+    const unsigned int descent = o.method == "uopt" ? unsigned(o.descent) : 0u;
     auto np = SMP::parameters::start_weights(start, SMP::parameters::stretch_update(update,
-              SMP::parameters::step_rule(rule, SMP::parameters::polish_iterations(polish,
+              SMP::parameters::step_rule(rule, SMP::parameters::descent_iterations(descent,
+              SMP::parameters::polish_iterations(polish,
               SMP::parameters::polish_time_budget(o.polish_time, SMP::parameters::free_border(o.free_border,
               SMP::parameters::number_of_threads(unsigned(o.threads),
-              SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress))))))));
+              SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress)))))))));
     SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
     run_parameterizer(mesh, bhd, p, uv, o.charts, run);
     run.kept_step = p.report().kept_step;
@@ -498,7 +508,7 @@ int main(int argc, char** argv)
        << "  \"options\": {\"border\": " << json_string(o.border) << ", \"preset\": " << json_string(o.preset)
        << ", \"start\": " << json_string(o.start) << ", \"update\": " << json_string(o.update)
        << ", \"rule\": " << json_string(o.rule) << ", \"eta\": " << json_number(o.eta) << ", \"iterations\": " << o.iterations
-       << ", \"polish\": " << o.polish << ", \"polish_time\": " << json_number(o.polish_time)
+       << ", \"descent\": " << o.descent << ", \"polish\": " << o.polish << ", \"polish_time\": " << json_number(o.polish_time)
        << ", \"free_border\": " << (o.free_border ? "true" : "false")
        << ", \"charts\": " << (o.charts ? "true" : "false") << "},\n"
        << "  \"status\": " << json_string(SMP::error_message(run.status)) << ",\n"
@@ -511,8 +521,8 @@ int main(int argc, char** argv)
   }
   json << (run.history.empty() ? "" : "\n  ") << "],\n"
        << "  \"kept_step\": " << (ours ? std::to_string(run.kept_step) : std::string("null")) << ",\n"
-       << "  \"polish\": {\"ran\": " << (run.polish.ran() ? "true" : "false") << ", \"iterations\": "
-       << run.polish.iterations << ", \"l2_before\": " << json_number(run.polish.l2_before) << ", \"l2_after\": "
+       << "  \"polish\": {\"ran\": " << (run.polish.ran() ? "true" : "false") << ", \"descent_iterations\": "
+       << run.polish.descent_iterations << ", \"iterations\": " << run.polish.iterations << ", \"l2_before\": " << json_number(run.polish.l2_before) << ", \"l2_after\": "
        << json_number(run.polish.l2_after) << ", \"seconds\": " << json_number(run.polish.seconds)
        << ", \"message\": " << json_string(run.polish.message) << "},\n"
        << "  \"measures\": {\"faces\": " << stats.number_of_faces << ", \"l2_stretch\": " << json_number(stats.l2_stretch)

@@ -39,7 +39,8 @@ int main(int argc, char** argv)
     }
     std::cout << what << ": L2 stretch " << r.l2_stretch() << " (" << r.history.size() << " solves";
     if(r.polish.ran())
-      std::cout << ", then " << r.polish.iterations << " polish steps from " << r.polish.l2_before;
+      std::cout << ", then " << r.polish.descent_iterations << " descent and " << r.polish.iterations
+                << " Newton steps from " << r.polish.l2_before;
     else if(!r.polish.message.empty())
       std::cout << ", no polish: " << r.polish.message;
     std::cout << ")\n";
@@ -47,8 +48,8 @@ int main(int argc, char** argv)
   };
 
   typedef SMP::Stretch_minimizing_parameterizer_3<Mesh> Parameterizer;
-  // the paper's method, then the preset: clamped cotangent start, edge update, eta halved
-  // instead of stopping when a step does not help
+  // the paper's method, then the preset: clamped cotangent start, edge update, and 30 cheap
+  // descent steps on Sander's energy (flip-free) after U^opt
   if(!run("paper", Parameterizer()) ||
      !run("lowest stretch", Parameterizer(params::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH))))
     return EXIT_FAILURE;

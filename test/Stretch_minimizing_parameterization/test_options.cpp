@@ -202,13 +202,16 @@ void check_presets(const std::string& name, bool expect_lower, double* paper_l2,
   const Run lowest = run(m, bhd, SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH));
   const Run spelled = run(m, bhd, SMP::parameters::start_weights(SMP::Start_weights::CLAMPED_COTANGENT,
                                   SMP::parameters::stretch_update(SMP::Stretch_update::EDGE,
-                                  SMP::parameters::step_rule(SMP::Step_rule::HALVE_ETA))));
+                                  SMP::parameters::step_rule(SMP::Step_rule::STOP_AT_INCREASE,
+                                  SMP::parameters::descent_iterations(SMP::lowest_stretch_descent_iterations)))));
   const Run overridden = run(m, bhd, SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH,
                                      SMP::parameters::stretch_update(SMP::Stretch_update::VERTEX)));
   const Run spelled_vertex = run(m, bhd, SMP::parameters::start_weights(SMP::Start_weights::CLAMPED_COTANGENT,
-                                         SMP::parameters::step_rule(SMP::Step_rule::HALVE_ETA)));
+                                         SMP::parameters::descent_iterations(SMP::lowest_stretch_descent_iterations)));
   SMP_CHECK(plain.written_l2 == paper.written_l2, name << ": PAPER is not the default");
-  SMP_CHECK(lowest.written_l2 == spelled.written_l2 && lowest.report.history.size() == spelled.report.history.size(),
+  SMP_CHECK(lowest.written_l2 == spelled.written_l2 && lowest.report.history.size() == spelled.report.history.size() &&
+            lowest.report.polish.descent_iterations == spelled.report.polish.descent_iterations &&
+            lowest.report.polish.descent_iterations > 0,
             name << ": LOWEST_STRETCH differs from its options");
   SMP_CHECK(overridden.written_l2 == spelled_vertex.written_l2, name << ": an option beside a preset does not override it");
   SMP_CHECK(!expect_lower || lowest.written_l2 < paper.written_l2, name << ": LOWEST_STRETCH " << lowest.written_l2
@@ -222,9 +225,10 @@ void check_presets(const std::string& name, bool expect_lower, double* paper_l2,
   auto vimap = get(CGAL::vertex_index, m);
   auto vpmap = m.add_property_map<vertex_descriptor, bool>("v:p", false).first;
   p.parameterize(m, bhd, uv, vimap, vpmap, SMP::parameters::preset(SMP::Stretch_minimizing_preset::PAPER));
-  SMP_CHECK(p.report().kept().l2_stretch == paper.report.kept().l2_stretch, name << ": per-call preset ignored");
+  SMP_CHECK(p.report().kept().l2_stretch == paper.report.kept().l2_stretch && !p.report().polish.ran(),
+            name << ": per-call preset ignored");
   p.parameterize(m, bhd, uv, vimap, vpmap);
-  SMP_CHECK(p.report().kept().l2_stretch == lowest.report.kept().l2_stretch, name << ": constructor preset lost");
+  SMP_CHECK(p.report().l2_stretch() == lowest.report.l2_stretch(), name << ": constructor preset lost");
 }
 
 // Proper or touching intersection of the segments (a, b) and (c, d).
@@ -259,7 +263,11 @@ void check_polish(const std::string& name)
   for(bool free : {false, true}) {
     const std::string what = name + (free ? " free-border polish" : " fixed-border polish");
     std::vector<SMP::Stretch_minimizing_step> steps;
-    auto record = [&steps](const SMP::Stretch_minimizing_step& s) { if(s.polish) steps.push_back(s); };
+    std::size_t descent_steps = 0;
+    auto record = [&](const SMP::Stretch_minimizing_step& s) {
+      if(s.polish) steps.push_back(s);
+      if(s.descent) ++descent_steps;
+    };
     Smp p(SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH,
           SMP::parameters::polish_iterations(20u, SMP::parameters::free_border(free,
           SMP::parameters::visitor(record)))));
@@ -271,8 +279,14 @@ void check_polish(const std::string& name)
       m.remove_property_map(uv);
       continue;
     }
-    SMP_CHECK(r.polish.free_border == free && r.polish.iterations == steps.size() && steps.size() <= 20,
-              what << ": " << steps.size() << " steps seen, " << r.polish.iterations << " reported");
+    // the preset's descent steps come first, then the Newton steps
+    SMP_CHECK(r.polish.free_border == free && r.polish.descent_iterations == descent_steps &&
+              descent_steps <= SMP::lowest_stretch_descent_iterations &&
+              r.polish.descent_iterations + r.polish.iterations == steps.size() && r.polish.iterations <= 20,
+              what << ": " << steps.size() << " steps seen, " << r.polish.descent_iterations << " + "
+                   << r.polish.iterations << " reported");
+    for(std::size_t k = 0; k < steps.size(); ++k)
+      SMP_CHECK(steps[k].step == k + 1 && steps[k].descent == (k < descent_steps), what << ": step " << k << " out of order");
     // it starts from U^opt; with a free border, the ears that the square flattened are first
     // opened (their tip moved off the side), which changes the stretch of those faces only
     SMP_CHECK(free ? std::abs(r.polish.l2_before - r.kept().l2_stretch) <= 1e-3 * r.kept().l2_stretch
@@ -316,7 +330,7 @@ void check_polish(const std::string& name)
       SMP_CHECK(crossings == 0, what << ": the border crosses itself " << crossings << " times");
     }
     std::cout << what << ": L2 " << r.polish.l2_before << " -> " << r.l2_stretch() << " in "
-              << r.polish.iterations << " steps" << std::endl;
+              << r.polish.descent_iterations << " descent and " << r.polish.iterations << " Newton steps" << std::endl;
     m.remove_property_map(uv);
   }
 }

@@ -269,6 +269,13 @@ void test_isometric_fixed_point()
   SMP_CHECK(rf.status == SI::Sander_polish_status::OK, rf.message);
   SMP_CHECK(max_displacement(uv, start) < 1e-9, "free border: the isometry moved by " << max_displacement(uv, start));
   SMP_CHECK(std::abs(rf.l2_after - 1.) < 1e-9, "free border: L2 " << rf.l2_after);
+
+  // the descent along the proxy: the gradient is zero, nothing moves
+  SI::Sander_polish_settings proxy;
+  proxy.direction = SI::Sander_polish_direction::DIRICHLET_PROXY;
+  const SI::Sander_polish_result rp = polisher.polish(g.m, {}, g.fixed, g.border, uv, proxy);
+  SMP_CHECK(rp.status == SI::Sander_polish_status::OK && rp.iterations == 0, "proxy: " << rp.message << " " << rp.iterations << " steps");
+  SMP_CHECK(max_displacement(uv, start) < 1e-9, "proxy: the isometry moved by " << max_displacement(uv, start));
 }
 
 void test_perturbed_grid()
@@ -284,6 +291,7 @@ void test_perturbed_grid()
   SI::Flat_stretch fs;
   const SI::Flat_stretch_summary s0 = fs.evaluate(g.m, uv);
   SMP_CHECK(s0.flipped == 0 && s0.degenerate_uv == 0 && s0.l2 > 1.01, "perturbed start: flips " << s0.flipped << " L2 " << s0.l2);
+  const std::vector<Vec2> start_of_perturbed = uv;
 
   SI::Sander_energy_polisher<> polisher;
   SI::Sander_polish_settings st;
@@ -294,6 +302,20 @@ void test_perturbed_grid()
   SMP_CHECK(max_displacement(uv, identity) < 1e-5, "perturbed grid: " << max_displacement(uv, identity) << " from the identity");
   std::cout << "perturbed grid: L2 " << r.l2_before << " -> " << std::setprecision(12) << r.l2_after
             << std::setprecision(6) << " in " << r.iterations << " iterations (" << stop_name(r.stop) << ")" << std::endl;
+
+  // the descent along the proxy (the Dirichlet energy's Hessian, which on a flat grid is the
+  // Hessian of E at the identity but for the twists) reaches the identity too
+  std::vector<Vec2> by_proxy = start_of_perturbed;
+  SI::Sander_polish_settings sp = st;
+  sp.direction = SI::Sander_polish_direction::DIRICHLET_PROXY;
+  sp.max_iterations = 2000;
+  const SI::Sander_polish_result rp = polisher.polish(g.m, {}, g.fixed, g.border, by_proxy, sp);
+  SMP_CHECK(rp.status == SI::Sander_polish_status::OK, rp.message);
+  SMP_CHECK(std::abs(rp.l2_after - 1.) < 1e-6 && max_displacement(by_proxy, identity) < 1e-5,
+            "perturbed grid, proxy: L2 " << rp.l2_before << " -> " << rp.l2_after << ", "
+            << max_displacement(by_proxy, identity) << " from the identity");
+  std::cout << "perturbed grid, proxy: L2 " << rp.l2_before << " -> " << std::setprecision(12) << rp.l2_after
+            << std::setprecision(6) << " in " << rp.iterations << " iterations (" << stop_name(rp.stop) << ")" << std::endl;
 
   // a mirrored start gives the mirrored result
   std::vector<Vec2> mirrored = uv;
@@ -517,6 +539,37 @@ void test_controls(const Start& s)
   SMP_CHECK(max_displacement(uv, seen) == 0., "the result is not the visitor's last map");
 }
 
+// The descent along the proxy from U^opt, border fixed and free: the energy never increases,
+// no face flips at any step, fixed vertices stay, the free border stays simple, and it gains.
+void test_descent(const std::string& name, const Start& s)
+{
+  SI::Flat_stretch fs;
+  for(bool free : {false, true}) {
+    const std::string what = name + (free ? " descent, free border" : " descent");
+    SI::Sander_polish_settings st;
+    st.direction = SI::Sander_polish_direction::DIRICHLET_PROXY;
+    st.max_iterations = 30;
+    st.free_border = free;
+    std::vector<Vec2> uv = s.uv;
+    const Run run = run_polish(s, uv, st, 0.);
+    SMP_CHECK(run.r.status == SI::Sander_polish_status::OK, what << ": " << run.r.message);
+    SMP_CHECK(run.monotone, what << ": the energy increased");
+    SMP_CHECK(run.max_flipped == 0, what << ": " << run.max_flipped << " flipped faces during the descent");
+    SMP_CHECK(run.r.l2_after < run.r.l2_before, what << ": no gain, L2 " << run.r.l2_before << " -> " << run.r.l2_after);
+    SMP_CHECK(fs.evaluate(s.m, uv).flipped == 0, what << ": flipped faces in the result");
+    double moved = 0.;
+    for(std::size_t v = 0; v < uv.size(); ++v)
+      if(s.fixed[v] && !(free && std::find(s.border.begin(), s.border.end(), int(v)) != s.border.end()))
+        moved = (std::max)(moved, std::hypot(uv[v][0] - s.uv[v][0], uv[v][1] - s.uv[v][1]));
+    SMP_CHECK(moved == 0., what << ": a fixed vertex moved by " << moved);
+    if(free)
+      SMP_CHECK(simple_loop(s.border, uv), what << ": the border loop intersects itself");
+    std::cout << std::fixed << std::setprecision(4) << what << ": L2 " << run.r.l2_before << " -> " << run.r.l2_after
+              << " in " << run.r.iterations << " steps, " << std::setprecision(3) << run.r.seconds << " s"
+              << std::defaultfloat << std::endl;
+  }
+}
+
 // Fixed border (`reference`: the optimum measured elsewhere); then, if `free_goal` > 0, a free
 // border, and when the L2 reaches the goal.
 void test_mesh(const std::string& name, double reference, double free_goal, bool controls = false)
@@ -524,6 +577,7 @@ void test_mesh(const std::string& name, double reference, double free_goal, bool
   Start s;
   if(!load_start(name, s)) return;
   if(controls) test_controls(s);
+  test_descent(name, s);
   SI::Flat_stretch fs;
 
   SI::Sander_polish_settings st;
@@ -578,6 +632,7 @@ void test_holes()
   Start s;
   if(!load_start("holes.off", s)) return;
   SMP_CHECK(!s.guard.empty(), "holes.off: no hole closed");
+  test_descent("holes.off", s);
   SI::Sander_polish_settings st;
   st.max_iterations = 500;
   std::vector<Vec2> uv = s.uv;

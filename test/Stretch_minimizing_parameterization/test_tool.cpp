@@ -172,7 +172,7 @@ void check_outputs()
   // the other methods and borders run too
   for(const char* args : {"-m mvc --border circle", "-m lscm", "-m u1 --border ear-aware", "-m u0 --start mvc",
                           "--preset lowest", "--start cot --update symmetric --rule halve", "--polish 5",
-                          "--polish-time 0.5 --free-border"}) {
+                          "--polish-time 0.5 --free-border", "--descent 10 --free-border"}) {
     const Result o = run(input + " -q --no-pictures -o out_methods " + args);
     SMP_CHECK(o.status == 0, args << ": " << o.err);
   }
@@ -187,10 +187,12 @@ void check_outputs()
     boost::property_tree::ptree json;
     boost::property_tree::read_json("out_polish/report.json", json);
     SMP_CHECK(json.get<bool>("polish.ran") && json.get<std::size_t>("polish.iterations") == polished.report().polish.iterations &&
+              json.get<std::size_t>("polish.descent_iterations") == polished.report().polish.descent_iterations &&
               std::abs(json.get<double>("polish.l2_after") - polished.report().l2_stretch()) < 1e-9 &&
               std::abs(json.get<double>("measures.l2_stretch") - polished.report().l2_stretch()) < 1e-9,
               "report.json polish: " << json.get<double>("polish.l2_after") << " vs " << polished.report().l2_stretch());
-    SMP_CHECK(json.get<std::string>("options.start") == "cot" && json.get<std::string>("options.rule") == "halve",
+    SMP_CHECK(json.get<std::string>("options.start") == "cot" && json.get<std::string>("options.rule") == "stop" &&
+              json.get<unsigned>("options.descent") == SMP::lowest_stretch_descent_iterations,
               "report.json options of the preset");
   }
 
@@ -219,6 +221,7 @@ void check_errors()
   check_error("unknown update", smp_test::data_file("nefertiti.off") + " --update face", "update");
   check_error("free border alone", smp_test::data_file("nefertiti.off") + " --free-border", "--polish");
   check_error("negative polish time", smp_test::data_file("nefertiti.off") + " --polish-time -1", "polish-time");
+  check_error("descent not a whole number", smp_test::data_file("nefertiti.off") + " --descent -3", "descent");
   check_error("natural border folds", smp_test::data_file("three_peaks.off") + " --border natural --no-pictures -o out_fold", "one-to-one");
   std::ofstream("nan.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
   const Result nan = run("nan.off -o out_nan");

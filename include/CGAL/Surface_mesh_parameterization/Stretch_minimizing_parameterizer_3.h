@@ -69,8 +69,9 @@ namespace Surface_mesh_parameterization {
 ///
 /// Beyond the paper, named parameters choose other start weights, another stretch update and
 /// another rule for a step that does not help (`Stretch_minimizing_preset::LOWEST_STRETCH` sets
-/// the three), and a polish after \f$ U^{opt} \f$: a projected Newton descent of Sander's stretch
-/// energy that keeps every face positive, with the border fixed or free (then never crossing itself).
+/// the three), and a polish after \f$ U^{opt} \f$ that lowers Sander's stretch energy directly and
+/// keeps every face positive, with the border fixed or free (then never crossing itself): cheap
+/// descent steps preconditioned by the cotangent Laplacian of the mesh, then projected Newton steps.
 ///
 /// The border, the initial weights and the solver are chosen through the template parameters;
 /// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`
@@ -194,15 +195,25 @@ public:
   ///     \cgalParamType{`Step_rule`}
   ///     \cgalParamDefault{`Step_rule::STOP_AT_INCREASE`, as in the paper}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{descent_iterations}
+  ///     \cgalParamDescription{after \f$ U^{opt} \f$, at most this many steps of descent of Sander's L2
+  ///                           stretch energy along its gradient preconditioned by the cotangent Laplacian
+  ///                           of the mesh (factored once: a step costs a gradient, two triangular solves and
+  ///                           a line search, far less than a reweighting step), flip-free by construction of
+  ///                           the line search (0: none)}
+  ///     \cgalParamType{unsigned int}
+  ///     \cgalParamDefault{0 (`Stretch_minimizing_preset::LOWEST_STRETCH`: see there)}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{polish_iterations}
-  ///     \cgalParamDescription{after \f$ U^{opt} \f$, at most this many iterations of a projected Newton
-  ///                           descent of Sander's L2 stretch energy, flip-free by construction of its line search (0: none)}
+  ///     \cgalParamDescription{after \f$ U^{opt} \f$ and the descent steps, at most this many iterations of a
+  ///                           projected Newton descent of Sander's L2 stretch energy (a factorization each),
+  ///                           flip-free by construction of its line search (0: none)}
   ///     \cgalParamType{unsigned int}
   ///     \cgalParamDefault{0}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{polish_time_budget}
-  ///     \cgalParamDescription{time budget of the polish, in seconds (0: none); given alone, it asks for
-  ///                           the polish with no cap on its steps}
+  ///     \cgalParamDescription{time budget of the polish (descent and Newton steps), in seconds (0: none);
+  ///                           without `polish_iterations`, it asks for Newton steps with no cap}
   ///     \cgalParamType{double}
   ///     \cgalParamDefault{0}
   ///   \cgalParamNEnd
@@ -267,7 +278,7 @@ public:
   /// \param np an optional sequence of named parameters (see below)
   ///
   /// The named parameters are the ones of the constructor (`preset`, `eta`, `number_of_iterations`,
-  /// `start_weights`, `stretch_update`, `step_rule`, `polish_iterations`, `polish_time_budget`,
+  /// `start_weights`, `stretch_update`, `step_rule`, `descent_iterations`, `polish_iterations`, `polish_time_budget`,
   /// `free_border`, `number_of_threads`, `verbose`, `visitor`); each one given overrides, for this call only, the value
   /// given to the constructor (a preset resets the options of the constructor that it sets).
   ///

@@ -27,6 +27,7 @@ struct Stretch_minimizing_step
   std::size_t degenerate_uv_faces = 0; ///< faces of zero parameter area (e.g. border ears)
   double seconds = 0.;                 ///< wall time since the start of the call
   bool polish = false;                 ///< a step of the polish stage (`step` counts from 1 there)
+  bool descent = false;                ///< a descent step of the polish stage, before its Newton steps
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -41,25 +42,27 @@ enum class Stretch_minimizing_stop
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
-/// Why the polish stage ended.
+/// Why the polish stage ended (its Newton steps if any ran, else its descent steps).
 enum class Polish_stop
 {
   NOT_RUN,        ///< no polish was asked for, or it could not start (see `Stretch_minimizing_polish::message`)
-  CONVERGED,      ///< a step lowered the energy by less than a relative \f$ 10^{-7} \f$
-  ITERATION_CAP,  ///< `polish_iterations` steps were taken
+  CONVERGED,      ///< a step lowered the energy by less than a relative \f$ 10^{-6} \f$
+  ITERATION_CAP,  ///< `polish_iterations` Newton steps (or, without them, `descent_iterations` descent steps) were taken
   TIME_BUDGET,    ///< `polish_time_budget` ran out
   VISITOR,        ///< the visitor asked to stop
   NO_PROGRESS     ///< the line search found no step that lowers the energy
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
-/// What the polish stage did: a projected Newton descent of Sander's L2 stretch energy from
-/// \f$ U^{opt} \f$, with the border fixed or free.
+/// What the polish stage did to lower Sander's L2 stretch energy from \f$ U^{opt} \f$, with the
+/// border fixed or free: descent steps along the gradient preconditioned by the cotangent
+/// Laplacian of the mesh (factored once, cheap steps), then projected Newton steps.
 struct Stretch_minimizing_polish
 {
   Polish_stop stop = Polish_stop::NOT_RUN;       ///< why it ended
-  std::string message;                           ///< why it could not start, if so
+  std::string message;                           ///< why it could not start or could not go on, if so
   bool free_border = false;                      ///< the border moved
+  std::size_t descent_iterations = 0;            ///< descent steps taken
   std::size_t iterations = 0;                    ///< Newton steps taken
   double l2_before = 0.;                         ///< normalized L2 stretch of \f$ U^{opt} \f$
   double l2_after = 0.;                          ///< normalized L2 stretch of the map written

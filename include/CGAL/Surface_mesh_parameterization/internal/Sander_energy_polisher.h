@@ -6,7 +6,10 @@
 
 // Minimizes the L2 stretch energy of Sander, Snyder, Gortler and Hoppe (2001),
 //   E(uv) = sum_T A3(T) (a + c) / 2 = sum_T A3(T) ||J_T^-1||_F^2 / 2,
-// by projected Newton from a flip-free parameterization, keeping it flip-free. J_T is the
+// from a flip-free parameterization, keeping it flip-free: by projected Newton (a factorization
+// per step), or by descent along the gradient preconditioned by a fixed quadratic proxy, the
+// Dirichlet energy of the 3D mesh (the cotangent Laplacian, factored once: cheap steps that
+// converge more slowly; the proxy of Kovalsky, Galun and Lipman 2016, without their acceleration). J_T is the
 // Jacobian of the affine map from the face's 3D triangle (in a 2D frame of its plane) to its uv
 // triangle; ||J^-1||_F^2 = ||J||_F^2 / det(J)^2 = 1 / s1^2 + 1 / s2^2.
 //
@@ -150,8 +153,12 @@ inline Eigen::Matrix4d sander_face_projected_hessian(const Eigen::Matrix2d& J, d
 // ---------------------------------------------------------------------------------------------
 // The polisher
 
+// How a step finds its direction.
+enum class Sander_polish_direction { NEWTON, DIRICHLET_PROXY };
+
 struct Sander_polish_settings
 {
+  Sander_polish_direction direction = Sander_polish_direction::NEWTON;
   unsigned int max_iterations = 200;
   double time_budget = 0.;    // seconds, checked before each step; <= 0: none
   bool free_border = false;   // let the outer border move (the vertices of `border`)
@@ -246,6 +253,10 @@ public:
       return r;
     }
 
+    const bool proxy = settings.direction == Sander_polish_direction::DIRICHLET_PROXY;
+    if(!proxy)
+      build_newton_pattern();
+    double first_trial = 1.; // of the line search; with the proxy, the last step taken
     bool factored = false;
     for(;;) {
       if(r.iterations >= settings.max_iterations) { r.stop = Sander_polish_stop::ITERATION_CAP; break; }
@@ -260,15 +271,28 @@ public:
         m_mu = pure / area_of(m_x);
         E = 2. * pure; // G at the current map
       }
-      assemble();
-      if(!factored) {
-        m_solver.analyzePattern(m_H);
+      assemble(!proxy);
+      if(proxy) {
+        if(!factored) {
+          assemble_proxy();
+          m_solver.compute(m_P);
+          factored = true;
+          if(m_solver.info() != Eigen::Success)
+            return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the proxy failed");
+        }
+        // the proxy acts on u and v alike: one solve with two columns
+        m_pp = m_solver.solve(Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> >(
+          m_g.data(), Eigen::Index(m_dofs), 2));
+        Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> >(m_p.data(), Eigen::Index(m_dofs), 2) = m_pp;
+      } else {
+        if(!factored)
+          m_solver.analyzePattern(m_H);
+        m_solver.factorize(m_H);
         factored = true;
+        if(m_solver.info() != Eigen::Success)
+          return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the Newton system failed");
+        m_p = m_solver.solve(m_g);
       }
-      m_solver.factorize(m_H);
-      if(m_solver.info() != Eigen::Success)
-        return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the Newton system failed");
-      m_p = m_solver.solve(m_g);
       if(m_solver.info() != Eigen::Success || !m_p.allFinite())
         return fail(Sander_polish_status::SOLVER_FAILED, "the Newton system could not be solved");
       m_p = -m_p;
@@ -281,8 +305,10 @@ public:
         if(m_dof[v] >= 0)
           m_dir[v] = {m_p(2 * m_dof[v]), m_p(2 * m_dof[v] + 1)};
 
-      const double E_new = line_search(E, slope, settings.free_border);
+      const double E_new = line_search(E, slope, settings.free_border, first_trial, !proxy);
       if(!(E_new < E)) { r.stop = Sander_polish_stop::NO_PROGRESS; break; }
+      if(proxy) // a step longer than the last one taken in full, or as long as the last one cut
+        first_trial = m_trial_t == first_trial ? 2. * m_trial_t : m_trial_t;
       m_x.swap(m_trial);
       const double decrease = E - E_new;
       E = E_new;
@@ -433,10 +459,16 @@ private:
         m_dof[v] = int(m_dofs++);
     m_dir.assign(nv, Vec2{0., 0.});
     m_trial = m_x;
-    if(m_dofs == 0)
-      return true;
+    const Eigen::Index n = Eigen::Index(2 * m_dofs);
+    m_g.resize(n);
+    m_p.resize(n);
+    return true;
+  }
 
-    // lower triangle of the Hessian; every face keeps where its 6x6 block goes
+  // The pattern of the lower triangle of the Newton system; every face keeps where its 6x6
+  // block goes.
+  void build_newton_pattern()
+  {
     std::vector<Eigen::Triplet<double> > entries;
     entries.reserve(m_energy.size() * 21);
     for(const Energy_face& f : m_energy)
@@ -461,9 +493,6 @@ private:
             m_slot[36 * k + 6 * a + b] = int(std::lower_bound(first, last, i) - m_H.innerIndexPtr());
           }
         }
-    m_g.resize(n);
-    m_p.resize(n);
-    return true;
   }
 
   // The uv area of the energy faces of `x`.
@@ -504,39 +533,76 @@ private:
     return E;
   }
 
-  // Gradient and projected Hessian at x.
-  void assemble()
+  // Gradient at x, and the projected Hessian if asked.
+  void assemble(bool hessian)
   {
     m_g.setZero();
-    std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
+    if(hessian)
+      std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
     Eigen::Vector4d gJ;
     Eigen::Matrix4d HJ;
     Eigen::Matrix<double, 4, 6> B;
-    Eigen::Matrix<double, 6, 1> gx;
     Eigen::Matrix<double, 6, 6> Hx;
     for(std::size_t k = 0; k < m_energy.size(); ++k) {
       const Energy_face& f = m_energy[k];
       const Eigen::Matrix2d J = jacobian(f, m_x);
       sander_face_energy(J, f.area, m_mu, &gJ);
-      HJ = sander_face_projected_hessian(J, f.area, m_mu, eigenvalue_floor);
-      // vec(J) = B x with x = (u1, v1, u2, v2, u3, v3): J(r, c) = sum_a x(2a + r) D(a, c)
-      B.setZero();
-      for(int a = 0; a < 3; ++a)
-        for(int r = 0; r < 2; ++r)
-          for(int c = 0; c < 2; ++c)
-            B(2 * r + c, 2 * a + r) = f.D(a, c);
-      gx.noalias() = B.transpose() * gJ;
-      Hx.noalias() = B.transpose() * HJ * B;
-      for(int a = 0; a < 6; ++a) {
-        const int i = index(f.v[a / 2], a % 2);
-        if(i < 0) continue;
-        m_g(i) += gx(a);
-        for(int b = 0; b < 6; ++b) {
-          const int s = m_slot[36 * k + 6 * a + b];
-          if(s >= 0) m_H.valuePtr()[s] += Hx(a, b);
+      for(int a = 0; a < 3; ++a) // d vec(J) / d(u_a, v_a), from J(r, c) = sum_a x(2a + r) D(a, c)
+        for(int r = 0; r < 2; ++r) {
+          const int i = index(f.v[a], r);
+          if(i >= 0) m_g(i) += gJ(2 * r) * f.D(a, 0) + gJ(2 * r + 1) * f.D(a, 1);
         }
-      }
+      if(!hessian) continue;
+      jacobian_operator(f, B);
+      HJ = sander_face_projected_hessian(J, f.area, m_mu, eigenvalue_floor);
+      Hx.noalias() = B.transpose() * HJ * B;
+      add_block(k, Hx);
     }
+  }
+
+  // The proxy, one row per moving vertex (it acts on u and v alike): the Hessian of the
+  // Dirichlet energy sum_T A3(T) ||J_T||_F^2 / 2, i.e. the cotangent Laplacian of the 3D mesh,
+  // scaled to the Hessian of E at a map of uniform scale s (J = s R, R a rotation), where E's
+  // curvature is about 3 A3 / s^4 along most directions of vec(J).
+  void assemble_proxy()
+  {
+    double area_3d = 0.;
+    for(const Energy_face& f : m_energy)
+      area_3d += f.area;
+    const double s2 = area_of(m_x) / area_3d;
+    std::vector<Eigen::Triplet<double> > entries;
+    entries.reserve(m_energy.size() * 6);
+    for(const Energy_face& f : m_energy) {
+      const Eigen::Matrix3d L = (3. * f.area / (s2 * s2)) * (f.D * f.D.transpose());
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b) {
+          const int i = m_dof[f.v[a]], j = m_dof[f.v[b]];
+          if(i >= 0 && j >= 0 && i >= j)
+            entries.emplace_back(i, j, L(a, b));
+        }
+    }
+    m_P.resize(Eigen::Index(m_dofs), Eigen::Index(m_dofs));
+    m_P.setFromTriplets(entries.begin(), entries.end());
+  }
+
+  // vec(J) = B x with x = (u1, v1, u2, v2, u3, v3): J(r, c) = sum_a x(2a + r) D(a, c)
+  static void jacobian_operator(const Energy_face& f, Eigen::Matrix<double, 4, 6>& B)
+  {
+    B.setZero();
+    for(int a = 0; a < 3; ++a)
+      for(int r = 0; r < 2; ++r)
+        for(int c = 0; c < 2; ++c)
+          B(2 * r + c, 2 * a + r) = f.D(a, c);
+  }
+
+  // Adds the 6x6 block of energy face k to the lower triangle of m_H.
+  void add_block(std::size_t k, const Eigen::Matrix<double, 6, 6>& Hx)
+  {
+    for(int a = 0; a < 6; ++a)
+      for(int b = 0; b < 6; ++b) {
+        const int s = m_slot[36 * k + 6 * a + b];
+        if(s >= 0) m_H.valuePtr()[s] += Hx(a, b);
+      }
   }
 
   // Largest t in (0, inf] with every face of a free vertex positively oriented on [0, t).
@@ -568,21 +634,21 @@ private:
     return t_max;
   }
 
-  // Backtracking from min(1, 0.8 t_max) until Armijo holds (and the border stays simple).
-  // A first trial that passes is doubled while the energy keeps falling, within 0.8 t_max:
-  // the clamped twists make the model stiffer than the energy, and the best step is often 2.
-  // Returns the objective at the step taken (left in m_trial), or E if none.
-  double line_search(double E, double slope, bool free_border)
+  // Backtracking from min(first, 0.8 t_max) until Armijo holds (and the border stays simple).
+  // With `extrapolate`, a first trial that passes is doubled while the energy keeps falling,
+  // within 0.8 t_max: the clamped twists make the Newton model stiffer than the energy, and the
+  // best step is often 2. Returns the objective at the step taken (left in m_trial), or E if none.
+  double line_search(double E, double slope, bool free_border, double first, bool extrapolate)
   {
     const double t_max = max_step();
-    double t = (std::min)(1., 0.8 * t_max);
+    double t = (std::min)(first, 0.8 * t_max);
     for(int k = 0; k < 60 && t > 0.; ++k, t *= 0.5) {
       const double E_t = energy_at(t);
       if(!(E_t < E) || !(E_t <= E + 1e-4 * t * slope))
         continue;
       if(free_border && !border_is_simple())
         continue;
-      if(k > 0)
+      if(k > 0 || !extrapolate)
         return E_t;
       double best = E_t, t_best = t;
       for(double s = 2. * t; s <= 0.8 * t_max && s <= 1e6; s *= 2.) {
@@ -667,8 +733,9 @@ private:
   double m_mu = 0., m_area_uv = 0.;
   bool m_area_term = false;
   double m_trial_t = 0.;                   // m_trial = m_x + m_trial_t * m_dir
-  Eigen::SparseMatrix<double> m_H;
+  Eigen::SparseMatrix<double> m_H, m_P;    // Newton system, proxy
   Eigen::VectorXd m_g, m_p;
+  Eigen::Matrix<double, Eigen::Dynamic, 2> m_pp; // proxy solve, u and v columns
   Solver m_solver;
   Flat_stretch m_stretch;
 };

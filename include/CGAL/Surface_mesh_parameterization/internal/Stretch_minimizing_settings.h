@@ -22,6 +22,7 @@ struct Stretch_minimizing_settings
   Start_weights start = Start_weights::INITIALIZER;
   Stretch_update update = Stretch_update::VERTEX;
   Step_rule rule = Step_rule::STOP_AT_INCREASE;
+  unsigned int descent_iterations = 0;
   unsigned int polish_iterations = 0;
   double polish_seconds = 0.;
   bool free_border = false;
@@ -30,19 +31,20 @@ struct Stretch_minimizing_settings
   Step_visitor visitor;
 
   // a time budget alone asks for the polish too, with no cap on its steps
-  bool polish() const { return polish_iterations > 0 || polish_seconds > 0.; }
+  bool polish() const { return descent_iterations > 0 || polish_iterations > 0 || polish_seconds > 0.; }
 
   void apply(Stretch_minimizing_preset p)
   {
     eta = 1.;
+    rule = Step_rule::STOP_AT_INCREASE;
     if(p == Stretch_minimizing_preset::LOWEST_STRETCH) {
       start = Start_weights::CLAMPED_COTANGENT;
       update = Stretch_update::EDGE;
-      rule = Step_rule::HALVE_ETA;
+      descent_iterations = lowest_stretch_descent_iterations;
     } else {
       start = Start_weights::INITIALIZER;
       update = Stretch_update::VERTEX;
-      rule = Step_rule::STOP_AT_INCREASE;
+      descent_iterations = 0;
     }
   }
 };
@@ -61,6 +63,7 @@ Stretch_minimizing_settings read_settings(const NamedParameters& np, Stretch_min
   s.start = choose_parameter(get_parameter(np, internal_np::start_weights), s.start);
   s.update = choose_parameter(get_parameter(np, internal_np::stretch_update), s.update);
   s.rule = choose_parameter(get_parameter(np, internal_np::step_rule), s.rule);
+  s.descent_iterations = choose_parameter(get_parameter(np, internal_np::descent_iterations), s.descent_iterations);
   s.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.polish_iterations);
   s.polish_seconds = choose_parameter(get_parameter(np, internal_np::polish_time_budget), s.polish_seconds);
   s.free_border = choose_parameter(get_parameter(np, internal_np::free_border), s.free_border);

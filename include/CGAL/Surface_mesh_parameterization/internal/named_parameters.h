@@ -16,6 +16,7 @@ enum start_weights_t { start_weights };
 enum stretch_update_t { stretch_update };
 enum step_rule_t { step_rule };
 enum preset_t { preset };
+enum descent_iterations_t { descent_iterations };
 enum polish_iterations_t { polish_iterations };
 enum polish_time_budget_t { polish_time_budget };
 enum free_border_t { free_border };
@@ -52,6 +53,7 @@ CGAL_SMP_ADD_NAMED_PARAMETER(start_weights)
 CGAL_SMP_ADD_NAMED_PARAMETER(stretch_update)
 CGAL_SMP_ADD_NAMED_PARAMETER(step_rule)
 CGAL_SMP_ADD_NAMED_PARAMETER(preset)
+CGAL_SMP_ADD_NAMED_PARAMETER(descent_iterations)
 CGAL_SMP_ADD_NAMED_PARAMETER(polish_iterations)
 CGAL_SMP_ADD_NAMED_PARAMETER(polish_time_budget)
 CGAL_SMP_ADD_NAMED_PARAMETER(free_border)
@@ -68,7 +70,9 @@ template <typename T> unspecified_type stretch_update(const T& value);
 template <typename T> unspecified_type step_rule(const T& value);
 /// A set of options: a `Stretch_minimizing_preset`.
 template <typename T> unspecified_type preset(const T& value);
-/// Cap on the iterations of the polish stage (0: no polish).
+/// Cap on the descent steps of the polish stage, before its Newton steps (0: none).
+template <typename T> unspecified_type descent_iterations(const T& value);
+/// Cap on the Newton steps of the polish stage (0: none).
 template <typename T> unspecified_type polish_iterations(const T& value);
 /// Time budget of the polish stage in seconds (0: none).
 template <typename T> unspecified_type polish_time_budget(const T& value);

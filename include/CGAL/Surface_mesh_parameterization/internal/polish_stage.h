@@ -92,8 +92,9 @@ inline void fit_in_unit_square(std::vector<Vec2>& uv)
     p = {(p[0] - lo[0]) / extent, (p[1] - lo[1]) / extent};
 }
 
-// Lowers the stretch of `uv` (U^opt) further by a flip-free projected Newton descent of
-// Sander's energy; `uv` is left as it is if the polish cannot start. The vertices from
+// Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps along the
+// gradient of Sander's energy preconditioned by the mesh's cotangent Laplacian (cheap), then by
+// projected Newton steps; `uv` is left as it is if the polish cannot start. The vertices from
 // `real_vertices` on are the centres of the fans closing the holes.
 inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertices,
                          const Stretch_minimizing_settings& settings,
@@ -107,43 +108,67 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
   if(!settings.free_border)
     for(int v : dc.border)
       fixed[v] = 1;
-  Sander_polish_settings ps;
-  ps.max_iterations = settings.polish_iterations > 0 ? settings.polish_iterations
-                                                    : (std::numeric_limits<unsigned int>::max)();
-  ps.time_budget = settings.polish_seconds;
-  ps.free_border = settings.free_border;
 
+  bool descent = false; // the phase running, for the visitor
+  std::size_t steps = 0;
   auto visitor = [&](const Sander_polish_step& s) {
     const Flat_stretch_summary& m = s.measures; // measured once, by the polisher
-    Stretch_minimizing_step step = make_step(s.iteration, m, start);
+    Stretch_minimizing_step step = make_step(++steps, m, start);
     step.polish = true;
+    step.descent = descent;
     pol.history.push_back(step);
     if(settings.verbose)
-      std::cerr << "stretch minimization: polish " << step.step << "  L2 " << m.l2 << "  Linf " << m.linf
-                << "  " << step.seconds << " s" << std::endl;
+      std::cerr << "stretch minimization: " << (descent ? "descent " : "polish ") << step.step << "  L2 " << m.l2
+                << "  Linf " << m.linf << "  " << step.seconds << " s" << std::endl;
     return settings.visitor ? settings.visitor(step) : true;
   };
   // on a copy: if the polish cannot start, `uv` stays U^opt, ears and all
   std::vector<Vec2> polished = uv;
   if(settings.free_border)
     open_flat_ears(dc, polished);
-  Sander_energy_polisher<> polisher;
-  const Sander_polish_result r =
-    polisher.polish(dc.flat, dc.virtual_tri, fixed, dc.border, polished, ps, visitor);
-  pol.seconds = r.seconds;
-  if(r.status != Sander_polish_status::OK) {
-    pol.message = r.message;
-    return;
-  }
-  uv.swap(polished);
   typedef Sander_polish_stop Stop;
-  pol.stop = r.stop == Stop::CONVERGED ? Polish_stop::CONVERGED
-           : r.stop == Stop::ITERATION_CAP ? Polish_stop::ITERATION_CAP
-           : r.stop == Stop::TIME_BUDGET ? Polish_stop::TIME_BUDGET
-           : r.stop == Stop::VISITOR ? Polish_stop::VISITOR : Polish_stop::NO_PROGRESS;
-  pol.iterations = r.iterations;
-  pol.l2_before = r.l2_before;
-  pol.l2_after = r.l2_after;
+  Sander_polish_result r;
+  double seconds = 0.;
+  bool first = true;
+  for(Sander_polish_direction direction : {Sander_polish_direction::DIRICHLET_PROXY, Sander_polish_direction::NEWTON}) {
+    descent = direction == Sander_polish_direction::DIRICHLET_PROXY;
+    Sander_polish_settings ps;
+    ps.direction = direction;
+    ps.free_border = settings.free_border;
+    // a time budget alone leaves the Newton steps uncapped
+    ps.max_iterations = descent ? settings.descent_iterations
+                      : settings.polish_iterations > 0 || settings.polish_seconds <= 0.
+                        ? settings.polish_iterations : (std::numeric_limits<unsigned int>::max)();
+    if(ps.max_iterations == 0)
+      continue;
+    if(settings.polish_seconds > 0.) {
+      ps.time_budget = settings.polish_seconds - seconds;
+      if(!(ps.time_budget > 0.))
+        break;
+    }
+    Sander_energy_polisher<> polisher;
+    r = polisher.polish(dc.flat, dc.virtual_tri, fixed, dc.border, polished, ps, visitor);
+    seconds += r.seconds;
+    if(r.status != Sander_polish_status::OK) {
+      pol.message = r.message;
+      break;
+    }
+    if(first)
+      pol.l2_before = r.l2_before;
+    first = false;
+    (descent ? pol.descent_iterations : pol.iterations) = r.iterations;
+    pol.l2_after = r.l2_after;
+    pol.stop = r.stop == Stop::CONVERGED ? Polish_stop::CONVERGED
+             : r.stop == Stop::ITERATION_CAP ? Polish_stop::ITERATION_CAP
+             : r.stop == Stop::TIME_BUDGET ? Polish_stop::TIME_BUDGET
+             : r.stop == Stop::VISITOR ? Polish_stop::VISITOR : Polish_stop::NO_PROGRESS;
+    if(r.stop == Stop::TIME_BUDGET || r.stop == Stop::VISITOR)
+      break;
+  }
+  pol.seconds = seconds;
+  if(first) // nothing ran, or the first phase could not start: `uv` stays U^opt
+    return;
+  uv.swap(polished);
   if(settings.free_border)
     fit_in_unit_square(uv);
 }
