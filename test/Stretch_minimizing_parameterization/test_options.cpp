@@ -339,11 +339,11 @@ int main()
 {
   check_ring_weights();
   check_update_ratios_of_a_linear_map();
-  // LOWEST_STRETCH is below PAPER on the curved meshes; on the nearly flat mesh_with_border
-  // both end within 0.05% of each other, on either side
+  // LOWEST_STRETCH is below PAPER on every bundled disk (its reweighting alone was not on the
+  // nearly flat mesh_with_border and on holes: the descent steps make the difference there)
   const struct { const char* name; bool lower; } meshes[] = {
     {"mannequin-devil.off", true}, {"three_peaks.off", true}, {"mushroom.off", true}, {"patch-01.off", true},
-    {"nefertiti.off", true}, {"mesh_with_border.off", false}, {"holes.off", false}};
+    {"nefertiti.off", true}, {"mesh_with_border.off", true}, {"holes.off", true}};
   for(const auto& mesh : meshes) {
     const std::string name = mesh.name;
     check_combinations(name);
