@@ -207,8 +207,8 @@ typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_
 
 #if defined(CGAL_SMP_USE_CHOLMOD)
 // The proxy is factored once and solved at every step: CHOLMOD's supernodal factorization
-// (ordered by AMD or METIS, whichever it finds sparser) solves it several times faster than
-// SimplicialLDLT on large meshes.
+// (CHOLMOD's default ordering: AMD, and METIS too when AMD fills in much) made the 30 descent
+// steps on 207k vertices twice as fast as SimplicialLDLT.
 typedef Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_proxy_default_solver;
 #else
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_proxy_default_solver;
