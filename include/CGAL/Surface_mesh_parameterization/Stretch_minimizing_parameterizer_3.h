@@ -68,10 +68,11 @@ namespace Surface_mesh_parameterization {
 /// and counted in the report.
 ///
 /// Beyond the paper, named parameters choose other start weights, another stretch update and
-/// another rule for a step that does not help (`Stretch_minimizing_preset::LOWEST_STRETCH` sets
-/// the three), and a polish after \f$ U^{opt} \f$ that lowers Sander's stretch energy directly and
-/// keeps every face positive, with the border fixed or free (then never crossing itself): cheap
-/// descent steps preconditioned by the cotangent Laplacian of the mesh, then projected Newton steps.
+/// another rule for a step that does not help, and a polish after \f$ U^{opt} \f$ that lowers
+/// Sander's stretch energy directly and keeps every face positive, with the border fixed or free
+/// (then never crossing itself): cheap descent steps preconditioned by the cotangent Laplacian of
+/// the mesh, then projected Newton steps. `Stretch_minimizing_preset::LOWEST_STRETCH` sets the
+/// start, the update and 30 descent steps.
 ///
 /// The border, the initial weights and the solver are chosen through the template parameters;
 /// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`
