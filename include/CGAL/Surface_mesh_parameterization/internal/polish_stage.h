@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Stretch_minimizing_settings.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <algorithm>
 #include <chrono>
@@ -135,6 +136,7 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
     Sander_polish_settings ps;
     ps.direction = direction;
     ps.free_border = settings.free_border;
+    ps.threads = thread_count(settings.threads);
     // a time budget alone leaves the Newton steps uncapped
     ps.max_iterations = descent ? settings.descent_iterations
                       : settings.polish_iterations > 0 || settings.polish_seconds <= 0.
