@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
 
 #include <algorithm>
 #include <chrono>
@@ -650,6 +651,60 @@ void test_holes()
             << std::setprecision(3) << run.r.seconds << " s, " << stop_name(run.r.stop) << std::defaultfloat << std::endl;
 }
 
+// A planar mesh with two slivers of zero area (CGAL's degtri_sliding.off): interior vertex 5
+// lies on the segment (4, 6) and interior vertex 2 on the segment (6, 4)'s line at a straight
+// angle, so U^0 and U^opt have flat faces in uv, from which the polish cannot step. It opens them
+// first, and it must then lower the stretch (the faces of zero 3D area take uv area from the
+// others: the energy times the area is what the polish lowers), flip nothing, and with a free
+// border reach the isometry.
+void test_flat_slivers()
+{
+  Mesh mesh;
+  const double xy[8][2] = {{4, -2}, {6, 0}, {4, 0}, {2, 0}, {1, 0}, {3, 0}, {5, 0}, {3, 2}};
+  std::vector<vertex_descriptor> v;
+  for(const auto& p : xy) v.push_back(mesh.add_vertex(Point_3(p[0], p[1], 0.)));
+  const int tri[8][3] = {{0, 1, 2}, {0, 2, 3}, {3, 2, 4}, {2, 1, 6}, {2, 6, 4}, {4, 6, 5}, {5, 6, 7}, {4, 5, 7}};
+  for(const auto& t : tri) mesh.add_face(v[t[0]], v[t[1]], v[t[2]]);
+  SMP_CHECK(CGAL::is_valid_polygon_mesh(mesh) && num_faces(mesh) == 8, "slivers: the mesh is not valid");
+  const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+  auto uvmap = mesh.add_property_map<vertex_descriptor, Point_2>("v:uv").first;
+  namespace P = SMP::parameters;
+
+  auto faces_positive = [&]() { // every face, the slivers too, oriented like the whole map
+    double total = 0.;
+    std::vector<double> a;
+    for(Mesh::Face_index f : faces(mesh)) {
+      std::vector<Point_2> q;
+      for(vertex_descriptor w : vertices_around_face(halfedge(f, mesh), mesh)) q.push_back(uvmap[w]);
+      a.push_back(CGAL::area(q[0], q[1], q[2]));
+      total += a.back();
+    }
+    return std::all_of(a.begin(), a.end(), [total](double x) { return x * total > 0.; });
+  };
+
+  SMP::Stretch_minimizing_parameterizer_3<Mesh> paper;
+  SMP_CHECK(SMP::parameterize(mesh, paper, bhd, uvmap) == SMP::OK, "slivers: " << paper.report().message);
+  const double l2_uopt = paper.report().l2_stretch();
+  SMP_CHECK(!faces_positive(), "slivers: U^opt has no flat face (the test lost its point)");
+
+  SMP::Stretch_minimizing_parameterizer_3<Mesh> fixed(P::polish_iterations(20u, P::descent_iterations(30u)));
+  SMP_CHECK(SMP::parameterize(mesh, fixed, bhd, uvmap) == SMP::OK, "slivers: " << fixed.report().message);
+  const SMP::Stretch_minimizing_polish& pol = fixed.report().polish;
+  SMP_CHECK(pol.ran() && pol.message.empty(), "slivers: the polish did not run: " << pol.message);
+  SMP_CHECK(std::abs(pol.l2_before - l2_uopt) < 1e-12, "slivers: l2_before " << pol.l2_before << " is not U^opt's " << l2_uopt);
+  SMP_CHECK(pol.l2_after < 0.99 * l2_uopt, "slivers: fixed border L2 " << pol.l2_after << " vs U^opt " << l2_uopt);
+  const SMP::Stretch_statistics st = SMP::compute_stretch_statistics(mesh, uvmap);
+  SMP_CHECK(std::abs(st.l2_stretch - pol.l2_after) < 1e-9, "slivers: reported L2 " << pol.l2_after << ", measured " << st.l2_stretch);
+  SMP_CHECK(st.flipped_faces == 0 && faces_positive(), "slivers: fixed border result has flipped or flat faces");
+
+  SMP::Stretch_minimizing_parameterizer_3<Mesh> free(P::polish_iterations(20u, P::free_border(true)));
+  SMP_CHECK(SMP::parameterize(mesh, free, bhd, uvmap) == SMP::OK, "slivers: " << free.report().message);
+  SMP_CHECK(free.report().polish.l2_after < 1.001, "slivers: free border L2 " << free.report().polish.l2_after);
+  SMP_CHECK(faces_positive(), "slivers: free border result has flipped or flat faces");
+  std::cout << std::setprecision(6) << "slivers: U^opt L2 " << l2_uopt << ", fixed border polish " << pol.l2_after << ", free border "
+            << free.report().polish.l2_after << std::endl;
+}
+
 int main()
 {
   test_face_derivatives();
@@ -663,5 +718,6 @@ int main()
   test_mesh("nefertiti.off", 1.049, 0.);
   test_mesh("mesh_with_border.off", 1.093, 0.);
   test_holes();
+  test_flat_slivers();
   return smp_test::summary();
 }

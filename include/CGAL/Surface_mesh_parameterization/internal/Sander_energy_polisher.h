@@ -13,9 +13,10 @@
 // Jacobian of the affine map from the face's 3D triangle (in a 2D frame of its plane) to its uv
 // triangle; ||J^-1||_F^2 = ||J||_F^2 / det(J)^2 = 1 / s1^2 + 1 / s2^2.
 //
-// With a fixed border and no hole the uv area A is constant, so E is the normalized L2 stretch
-// up to a constant factor. With a free border (E only shrinks as the map grows) or with holes
-// (whose area changes) the normalized L2 stretch is a function of E * A instead: each step
+// With a fixed border, no hole and no face of zero 3D area the uv area A of the energy faces is
+// constant, so E is the normalized L2 stretch up to a constant factor. With a free border (E
+// only shrinks as the map grows), with holes or with faces of zero 3D area (the uv area of
+// either is left out of A, and changes) the normalized L2 stretch is a function of E * A: each step
 // lowers G = E + mu * A with mu = E / A taken at the current map, where G = 2 E, and any G
 // below that gives E * A below the current one (AM-GM). The border loop is kept simple, which
 // with flip-free faces makes the map of a disk bijective.
@@ -292,10 +293,11 @@ public:
       return fail(Sander_polish_status::BAD_START, why);
     r.l2_before = r.l2_after = m_stretch.evaluate(m, uv, settings.threads).l2;
 
-    // With holes or a free border the uv area of the energy faces changes, and the normalized
-    // L2 stretch is a function of E * A rather than of E: each step then lowers
+    // With holes, a free border or faces without energy (zero 3D area) the uv area of the
+    // energy faces changes, and the normalized L2 stretch is a function of E * A rather than of
+    // E: each step then lowers
     // G = E + mu A with mu = E / A taken at the current map, which lowers E * A (AM-GM).
-    m_area_term = settings.free_border || !guard.empty();
+    m_area_term = settings.free_border || !m_guard.empty();
     m_mu = 0.;
     double E = energy_at(0.);
     r.energy_before = r.energy_after = m_area_term ? E * m_area_uv : E;

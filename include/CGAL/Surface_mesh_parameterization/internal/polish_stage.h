@@ -76,6 +76,81 @@ inline void open_flat_ears(const Disk_component_base& dc, std::vector<Vec2>& uv)
   }
 }
 
+// A face of zero 3D area with a straight angle at a moving vertex (e.g. a T-junction closed by a
+// sliver) comes out flat in uv too, since every start weight reproduces straight lines; the
+// polish needs the faces of its moving vertices positive. Moves such a vertex part of the way
+// towards the centroid of its neighbours: the largest part, from a half down to 1/1024, that
+// leaves all its faces positive (the middle vertex of the flat face is tried first). A vertex
+// no part works for stays, and the polish then declines to start, as before. Returns whether a
+// vertex moved.
+inline bool open_flat_faces(const Disk_component_base& dc, const std::vector<char>& fixed, std::vector<Vec2>& uv)
+{
+  auto signed_area = [&uv](const Triangle& t) {
+    const Vec2 &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
+    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+  };
+  double total = 0.;
+  for(const Triangle& t : dc.flat.tri)
+    total += signed_area(t);
+  const double orientation = total >= 0. ? 1. : -1.;
+  auto flat = [&](const Triangle& t) {
+    return !(orientation * signed_area(t) > 0.) && !(fixed[t[0]] && fixed[t[1]] && fixed[t[2]]);
+  };
+  if(std::none_of(dc.flat.tri.begin(), dc.flat.tri.end(), flat) &&
+     std::none_of(dc.virtual_tri.begin(), dc.virtual_tri.end(), flat))
+    return false;
+  std::vector<Triangle> faces(dc.flat.tri);
+  faces.insert(faces.end(), dc.virtual_tri.begin(), dc.virtual_tri.end());
+
+  // faces around each vertex, compressed
+  const std::size_t nv = uv.size();
+  std::vector<int> first(nv + 1, 0), around(3 * faces.size());
+  for(const Triangle& t : faces)
+    for(int v : t) ++first[std::size_t(v) + 1];
+  for(std::size_t v = 0; v < nv; ++v) first[v + 1] += first[v];
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for(std::size_t f = 0; f < faces.size(); ++f)
+    for(int v : faces[f]) around[std::size_t(fill[std::size_t(v)]++)] = int(f);
+
+  // moves v towards the centroid of its neighbours if some part of the way opens all its faces
+  auto open = [&](int v) {
+    Vec2 c = {0., 0.};
+    int n = 0;
+    for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1]; ++k)
+      for(int w : faces[std::size_t(around[std::size_t(k)])])
+        if(w != v) { c[0] += uv[w][0]; c[1] += uv[w][1]; ++n; }
+    const Vec2 p = uv[v];
+    for(double s = 0.5; s >= 1. / 1024.; s *= 0.5) {
+      uv[v] = {p[0] + s * (c[0] / n - p[0]), p[1] + s * (c[1] / n - p[1])};
+      bool positive = true;
+      for(int k = first[std::size_t(v)]; k < first[std::size_t(v) + 1] && positive; ++k)
+        positive = orientation * signed_area(faces[std::size_t(around[std::size_t(k)])]) > 0.;
+      if(positive)
+        return true;
+    }
+    uv[v] = p;
+    return false;
+  };
+  bool moved = false;
+  for(const Triangle& t : faces) {
+    if(!flat(t))
+      continue;
+    // the middle vertex first: the one the other two lie on either side of
+    int middle = 0;
+    for(int k = 0; k < 3; ++k) {
+      const Vec2 &m = uv[t[k]], &a = uv[t[(k + 1) % 3]], &b = uv[t[(k + 2) % 3]];
+      if((a[0] - m[0]) * (b[0] - m[0]) + (a[1] - m[1]) * (b[1] - m[1]) < 0.)
+        middle = k;
+    }
+    for(int v : {t[middle], t[(middle + 1) % 3], t[(middle + 2) % 3]})
+      if(!fixed[v] && open(v)) {
+        moved = true;
+        break;
+      }
+  }
+  return moved;
+}
+
 // A free border leaves the map at any place and scale: move it into the unit square, keeping
 // its proportions, as the fixed borders are.
 inline void fit_in_unit_square(std::vector<Vec2>& uv)
@@ -127,6 +202,7 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
   std::vector<Vec2> polished = uv;
   if(settings.free_border)
     open_flat_ears(dc, polished);
+  const bool opened = open_flat_faces(dc, fixed, polished);
   typedef Sander_polish_stop Stop;
   Sander_polish_result r;
   double seconds = 0.;
@@ -170,6 +246,16 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
   pol.seconds = seconds;
   if(first) // nothing ran, or the first phase could not start: `uv` stays U^opt
     return;
+  if(opened) { // the polish started from a moved U^opt: keep U^opt if it ended above it
+    const double l2_opt = Flat_stretch().evaluate(dc.flat, uv, thread_count(settings.threads)).l2;
+    if(!(pol.l2_after < l2_opt)) {
+      pol.l2_before = pol.l2_after = l2_opt;
+      pol.stop = Polish_stop::NO_PROGRESS;
+      pol.message = "the polish did not get below U^opt";
+      return;
+    }
+    pol.l2_before = l2_opt;
+  }
   uv.swap(polished);
   if(settings.free_border)
     fit_in_unit_square(uv);
