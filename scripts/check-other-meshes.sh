@@ -3,8 +3,9 @@
 # (Debian package libcgal-demo), every one of them that is a triangulated disk, except the ones
 # bundled here. From the root of the repository:
 #   bash scripts/check-other-meshes.sh
-# Writes benchmark/results/other_meshes.md (one row per mesh; times are medians of 5 calls, of
-# one call above 20k vertices). Builds in build/bench, extracts the meshes in build/other-meshes.
+# Writes benchmark/results/other_meshes.md (one row per mesh; times are medians of at least 5
+# rounds calling each method once, 1 above 20k vertices, more until 0.3 s, at most 201). Builds in
+# build/bench, extracts the meshes in build/other-meshes.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
