@@ -61,7 +61,7 @@ compiler="$(cache_value CMAKE_CXX_COMPILER)"
        /usr/include/eigen3/Eigen/src/Core/util/Macros.h)" \
        "(Debian libeigen3-dev $(dpkg-query -W -f='${Version}' libeigen3-dev 2>/dev/null || echo '?'))"
   echo "- gnuplot: $(gnuplot --version)"
-  echo "- source: git $(git rev-parse --short HEAD 2>/dev/null || echo '?')$(git diff --quiet HEAD -- include benchmark 2>/dev/null || echo ' (with uncommitted changes)')"
+  echo "- source: git $(git rev-parse --short HEAD 2>/dev/null || echo '?')$(git diff --quiet HEAD -- include benchmark/Stretch_minimizing_parameterization scripts cmake CMakeLists.txt 2>/dev/null || echo ' (with uncommitted changes)')"
   echo "- load average at the start: $(cut -d ' ' -f 1-3 /proc/loadavg)"
 } > "$results/machine.md"
 
