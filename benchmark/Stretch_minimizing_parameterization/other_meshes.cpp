@@ -112,7 +112,9 @@ int main(int argc, char** argv)
     Minimizer polished(P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH, P::polish_iterations(100u)));
     Minimizer free(P::polish_iterations(5u, P::free_border(true)));
     CGAL_MVC mvc;
-    auto call = [&](auto& parameterizer) { return [&] { SMP::parameterize(m, parameterizer, bhd, uv); }; };
+    auto call = [&](auto& parameterizer) {
+      return [&m, &bhd, &uv, p = &parameterizer] { SMP::parameterize(m, *p, bhd, uv); };
+    };
     const std::vector<double> t = interleaved_median_seconds(rounds, {call(paper), call(lowest), call(polished),
                                                                       call(free), call(mvc)});
     auto l2_of = [&](auto& parameterizer) { call(parameterizer)(); return l2(); };
