@@ -651,9 +651,9 @@ void test_holes()
             << std::setprecision(3) << run.r.seconds << " s, " << stop_name(run.r.stop) << std::defaultfloat << std::endl;
 }
 
-// A planar mesh with two slivers of zero area (CGAL's degtri_sliding.off): interior vertex 5
-// lies on the segment (4, 6) and interior vertex 2 on the segment (6, 4)'s line at a straight
-// angle, so U^0 and U^opt have flat faces in uv, from which the polish cannot step. It opens them
+// A planar mesh whose four faces along the x axis have zero area (CGAL's degtri_sliding.off):
+// interior vertices 2 and 5 lie on the segment between vertices 4 and 6, at straight angles, so
+// U^0 and U^opt have flat faces in uv, from which the polish cannot step. It opens them
 // first, and it must then lower the stretch (the faces of zero 3D area take uv area from the
 // others: the energy times the area is what the polish lowers), flip nothing, and with a free
 // border reach the isometry.
