@@ -21,6 +21,9 @@ enum polish_iterations_t { polish_iterations };
 enum polish_time_budget_t { polish_time_budget };
 enum free_border_t { free_border };
 enum number_of_threads_t { number_of_threads };
+enum max_stretch_t { max_stretch };
+enum resolution_t { resolution };
+enum gutter_t { gutter };
 } // namespace internal_np
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -58,6 +61,9 @@ CGAL_SMP_ADD_NAMED_PARAMETER(polish_iterations)
 CGAL_SMP_ADD_NAMED_PARAMETER(polish_time_budget)
 CGAL_SMP_ADD_NAMED_PARAMETER(free_border)
 CGAL_SMP_ADD_NAMED_PARAMETER(number_of_threads)
+CGAL_SMP_ADD_NAMED_PARAMETER(max_stretch)
+CGAL_SMP_ADD_NAMED_PARAMETER(resolution)
+CGAL_SMP_ADD_NAMED_PARAMETER(gutter)
 #undef CGAL_SMP_ADD_NAMED_PARAMETER
 #else
 /// Exponent \f$ \eta \f$ of the weight update \f$ w_{ij} \leftarrow w_{ij} / \sigma_j^{\eta} \f$, in \f$ (0, 1] \f$.
@@ -81,6 +87,12 @@ template <typename T> unspecified_type free_border(const T& value);
 /// Number of threads of the per-face, per-vertex and per-column loops (0: all cores, the default;
 /// 1: none started). The result does not depend on it.
 template <typename T> unspecified_type number_of_threads(const T& value);
+/// `make_atlas()`: a chart whose normalized L2 stretch is above this bound is cut further.
+template <typename T> unspecified_type max_stretch(const T& value);
+/// `make_atlas()`: texels along a side of the square texture.
+template <typename T> unspecified_type resolution(const T& value);
+/// `make_atlas()`: texels left between two charts.
+template <typename T> unspecified_type gutter(const T& value);
 /// Each function above also takes named parameters as a second argument and puts itself in front of them.
 #endif
 

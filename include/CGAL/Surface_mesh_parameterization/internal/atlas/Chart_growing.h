@@ -1,0 +1,301 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_ATLAS_CHART_GROWING_H
+#define CGAL_SMP_INTERNAL_ATLAS_CHART_GROWING_H
+
+// Cutting a triangle soup into charts that are topological disks, whatever the soup: any genus,
+// closed parts, non-manifold edges and vertices, inconsistent orientation.
+//
+// A chart is grown triangle by triangle. Its topology is kept in the gluing of triangle sides:
+// a triangle enters through one side glued to a side of the chart (its third corner is new, so
+// the chart stays a disk), and two sides of the chart that meet at a corner of the chart are
+// zipped together (a disk stays a disk). Corners glued together form the chart's vertices, so a
+// vertex that the chart meets twice (a non-manifold vertex, or the end of a cut) becomes two
+// chart vertices, and the sides never glued are the seams. Two sides can only be glued if they
+// are the two sides of one edge with exactly two triangles oriented alike; the triangles of an
+// input polygon always stay together.
+
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Atlas_input.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <numeric>
+#include <queue>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+class Chart_growing
+{
+public:
+  // Side s = 3 t + k of triangle t goes from its corner 3 t + k to its corner 3 t + (k + 1) % 3.
+  static int source_corner(int s) { return s; }
+  static int target_corner(int s) { return 3 * (s / 3) + (s % 3 + 1) % 3; }
+
+  explicit Chart_growing(const Atlas_triangles& m)
+    : m_mesh(m)
+  {
+    const std::size_t nt = m.vertex.size();
+    m_mate.assign(3 * nt, -1);
+    m_glued.assign(3 * nt, 0);
+    m_parent.resize(3 * nt);
+    std::iota(m_parent.begin(), m_parent.end(), 0);
+    m_chart.assign(nt, -1);
+
+    // the triangles of a polygon: a unit, glued along its diagonals
+    m_unit.resize(nt);
+    for(std::size_t t = 0; t < nt; ++t) {
+      if(t == 0 || m.polygon[t] != m.polygon[t - 1])
+        m_unit_first.push_back(t);
+      m_unit[t] = m_unit_first.size() - 1;
+    }
+    m_unit_first.push_back(nt);
+    for(std::size_t u = 0; u + 1 < m_unit_first.size(); ++u)
+      for(std::size_t a = m_unit_first[u]; a < m_unit_first[u + 1]; ++a)
+        for(std::size_t b = a + 1; b < m_unit_first[u + 1]; ++b)
+          for(int i = 0; i < 3; ++i)
+            for(int j = 0; j < 3; ++j) {
+              const int sa = int(3 * a) + i, sb = int(3 * b) + j;
+              if(m_mate[sa] < 0 && m_mate[sb] < 0 && from(sa) == to(sb) && to(sa) == from(sb)) {
+                m_mate[sa] = sb;
+                m_mate[sb] = sa;
+              }
+            }
+
+    // the other sides: mates when an edge has exactly two sides, in opposite directions
+    struct Hash { std::size_t operator()(const std::pair<int, int>& e) const { return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^ e.second); } };
+    std::unordered_map<std::pair<int, int>, std::array<int, 3>, Hash> sides;
+    sides.reserve(3 * nt);
+    for(int s = 0; s < int(3 * nt); ++s) {
+      if(m_mate[s] >= 0)
+        continue;
+      auto& e = sides.emplace(std::make_pair((std::min)(from(s), to(s)), (std::max)(from(s), to(s))),
+                              std::array<int, 3>{0, -1, -1}).first->second;
+      if(e[0] < 2)
+        e[1 + e[0]] = s;
+      ++e[0];
+    }
+    for(const auto& e : sides)
+      if(e.second[0] == 2 && from(e.second[1]) == to(e.second[2])) {
+        m_mate[e.second[1]] = e.second[2];
+        m_mate[e.second[2]] = e.second[1];
+      }
+
+    // unit normals (area-weighted) and areas
+    m_normal.assign(m_unit_first.size() - 1, Vec3{0., 0., 0.});
+    for(std::size_t t = 0; t < nt; ++t) {
+      const auto& v = m.vertex[t];
+      const Vec3 n = cross3(sub3(m.xyz[v[1]], m.xyz[v[0]]), sub3(m.xyz[v[2]], m.xyz[v[0]]));
+      Vec3& un = m_normal[m_unit[t]];
+      for(int i = 0; i < 3; ++i) un[i] += 0.5 * n[i];
+    }
+  }
+
+  std::size_t number_of_units() const { return m_unit_first.size() - 1; }
+  int chart(std::size_t t) const { return m_chart[t]; }
+  int mate(int s) const { return m_mate[s]; }
+  bool glued(int s) const { return m_glued[s] != 0; }
+  // The chart vertex of a corner: one representative corner per chart vertex.
+  int chart_vertex(int corner) { return find(corner); }
+
+  // Grows charts over the triangles whose `allowed` flag is set (one per triangle), numbered
+  // from `first_chart`: a triangle joins a chart while its polygon's normal stays within
+  // `max_angle` (radians) of the chart's mean normal, and while the chart holds fewer than
+  // `max_units` polygons (0: no limit). Every allowed triangle ends in a chart. Returns the
+  // number of charts made.
+  int grow(const std::vector<char>& allowed, int first_chart, double max_angle, std::size_t max_units = 0)
+  {
+    const double cos_max = std::cos(max_angle);
+    const std::size_t nt = m_mesh.vertex.size();
+    // forget the charts of the allowed triangles
+    for(std::size_t t = 0; t < nt; ++t)
+      if(allowed[t]) {
+        m_chart[t] = -1;
+        for(int k = 0; k < 3; ++k) {
+          m_glued[3 * t + k] = 0;
+          m_parent[3 * t + k] = int(3 * t + k);
+        }
+      }
+    auto free_unit = [&](std::size_t u) {
+      const std::size_t t = m_unit_first[u];
+      return allowed[t] && m_chart[t] < 0;
+    };
+
+    // the first seed: the unit whose normal is closest to the mean normal of the region
+    Vec3 mean = {0., 0., 0.};
+    std::vector<std::size_t> units;
+    for(std::size_t u = 0; u < number_of_units(); ++u)
+      if(free_unit(u)) {
+        units.push_back(u);
+        for(int i = 0; i < 3; ++i) mean[i] += m_normal[u][i];
+      }
+    if(units.empty())
+      return 0;
+    std::size_t seed = units.front();
+    double best = -HUGE_VAL;
+    for(std::size_t u : units) {
+      const double c = cosine(m_normal[u], mean);
+      if(c > best) { best = c; seed = u; }
+    }
+
+    std::queue<std::size_t> frontier; // next seeds: units next to finished charts
+    int made = 0;
+    std::size_t next_unit = 0;
+    for(;;) {
+      while(!frontier.empty() && !free_unit(frontier.front()))
+        frontier.pop();
+      if(made > 0) {
+        if(!frontier.empty()) {
+          seed = frontier.front();
+          frontier.pop();
+        } else {
+          while(next_unit < units.size() && !free_unit(units[next_unit]))
+            ++next_unit;
+          if(next_unit == units.size())
+            break;
+          seed = units[next_unit];
+        }
+      }
+      const int c = first_chart + made++;
+      grow_one(seed, c, cos_max, max_units, allowed, frontier);
+    }
+    return made;
+  }
+
+private:
+  struct Candidate
+  {
+    double cost;
+    int side; // a side of the chart whose mate may join
+    bool operator<(const Candidate& o) const { return cost > o.cost; }
+  };
+
+  int from(int s) const { return m_mesh.vertex[std::size_t(s / 3)][std::size_t(s % 3)]; }
+  int to(int s) const { return m_mesh.vertex[std::size_t(s / 3)][std::size_t((s % 3 + 1) % 3)]; }
+
+  static double cosine(const Vec3& a, const Vec3& b)
+  {
+    const double na = norm3(a), nb = norm3(b);
+    return na > 0. && nb > 0. ? dot3(a, b) / (na * nb) : 1.;
+  }
+
+  int find(int c)
+  {
+    while(m_parent[c] != c) {
+      m_parent[c] = m_parent[m_parent[c]];
+      c = m_parent[c];
+    }
+    return c;
+  }
+
+  void glue(int s)
+  {
+    const int m = m_mate[s];
+    m_glued[s] = m_glued[m] = 1;
+    m_parent[find(source_corner(s))] = find(target_corner(m));
+    m_parent[find(target_corner(s))] = find(source_corner(m));
+  }
+
+  // Zips side s with its mate if both are in chart c, unglued, and meet at a chart vertex; the
+  // border of the chart (`border`: its number of sides) stays at three sides at least.
+  bool try_zip(int s, int c, std::size_t& border)
+  {
+    const int m = m_mate[s];
+    if(m < 0 || m_glued[s] || m_chart[std::size_t(m / 3)] != c || border < 5)
+      return false;
+    const bool at_source = find(source_corner(s)) == find(target_corner(m));
+    const bool at_target = find(target_corner(s)) == find(source_corner(m));
+    if(at_source == at_target)
+      return false;
+    glue(s);
+    border -= 2;
+    return true;
+  }
+
+  void grow_one(std::size_t seed, int c, double cos_max, std::size_t max_units, const std::vector<char>& allowed,
+                std::queue<std::size_t>& frontier)
+  {
+    std::size_t units = 0;
+    Vec3 normal = {0., 0., 0.};
+    std::size_t border = 0;
+    std::vector<std::size_t> members; // triangles
+    std::priority_queue<Candidate> heap;
+
+    auto add_unit = [&](std::size_t u, int entry) { // entry: a chart side glued to the unit, or -1
+      const std::size_t first = m_unit_first[u], last = m_unit_first[u + 1];
+      ++units;
+      for(std::size_t t = first; t < last; ++t) {
+        m_chart[t] = c;
+        members.push_back(t);
+      }
+      border += 3 * (last - first) - 2 * (last - first - 1);
+      if(entry >= 0) {
+        glue(entry);
+        border -= 2;
+      }
+      for(std::size_t t = first; t < last; ++t) // the diagonals
+        for(int k = 0; k < 3; ++k) {
+          const int s = int(3 * t + k), m = m_mate[s];
+          if(m >= 0 && s < m && m_unit[std::size_t(m / 3)] == u)
+            glue(s);
+        }
+      for(int i = 0; i < 3; ++i) normal[i] += m_normal[u][i];
+      for(std::size_t t = first; t < last; ++t)
+        for(int k = 0; k < 3; ++k) {
+          const int s = int(3 * t + k), m = m_mate[s];
+          if(m < 0 || m_glued[s])
+            continue;
+          const std::size_t tm = std::size_t(m / 3);
+          if(m_chart[tm] == c)
+            try_zip(s, c, border);
+          else if(allowed[tm] && m_chart[tm] < 0)
+            heap.push(Candidate{1. - cosine(m_normal[m_unit[tm]], normal), s});
+        }
+    };
+
+    add_unit(seed, -1);
+    while(!heap.empty()) {
+      const Candidate k = heap.top();
+      heap.pop();
+      const int m = m_mate[k.side];
+      const std::size_t tm = std::size_t(m / 3);
+      if(m_chart[tm] >= 0 || m_glued[k.side])
+        continue;
+      const std::size_t u = m_unit[tm];
+      if(cosine(m_normal[u], normal) < cos_max || (max_units > 0 && units >= max_units)) {
+        frontier.push(u);
+        continue;
+      }
+      add_unit(u, k.side);
+    }
+    // zips made possible by later ones
+    for(bool again = true; again;) {
+      again = false;
+      for(std::size_t t : members)
+        for(int k = 0; k < 3; ++k)
+          again = try_zip(int(3 * t + k), c, border) || again;
+    }
+  }
+
+  const Atlas_triangles& m_mesh;
+  std::vector<int> m_mate;               // per side: the side it can be glued to, -1 if none
+  std::vector<char> m_glued;             // per side
+  std::vector<int> m_parent;             // union-find of corners: the chart vertices
+  std::vector<int> m_chart;              // per triangle, -1 if none yet
+  std::vector<std::size_t> m_unit;       // per triangle: its polygon's unit
+  std::vector<std::size_t> m_unit_first; // first triangle of each unit, and one past the last
+  std::vector<Vec3> m_normal;            // per unit: area-weighted normal (its length: the area)
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_ATLAS_CHART_GROWING_H

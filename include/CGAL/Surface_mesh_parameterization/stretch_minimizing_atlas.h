@@ -1,0 +1,367 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_ATLAS_H
+#define CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_ATLAS_H
+
+#include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Atlas_input.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+/// What `make_atlas()` did.
+struct Atlas_report
+{
+  Error_code status = OK;            ///< `OK`, `ERROR_EMPTY_MESH` or `ERROR_WRONG_PARAMETER` (see `message`)
+  std::string message;               ///< why, when `status` is not `OK`
+  std::size_t charts = 0;            ///< charts in the atlas
+  std::size_t triangles = 0;         ///< triangles the polygons were split into
+  std::size_t welded_vertices = 0;   ///< input vertices at the position of an earlier one
+  std::size_t flat_polygons = 0;     ///< polygons with fewer than three distinct positions (zero uv area)
+  double l2_stretch = 0.;            ///< normalized L2 stretch of the whole atlas (Sander et al. 2001)
+  double linf_stretch = 0.;          ///< normalized Linf stretch of the whole atlas
+  std::size_t flipped_faces = 0;     ///< triangles whose uv orientation is not the input's (0 unless a chart failed)
+  double seam_length = 0.;           ///< surface length of the cut edges (edges of two or more faces whose sides are not glued)
+  double edge_length = 0.;           ///< surface length of all edges
+  double utilization = 0.;           ///< area of the charts / area of the unit square
+  double seconds_input = 0.;         ///< checking, welding and triangulating the polygons
+  double seconds_cutting = 0.;       ///< growing the charts, and splitting the ones above the stretch bound
+  double seconds_parameterization = 0.; ///< flattening the charts
+  double seconds_packing = 0.;       ///< packing them into the unit square
+  double seconds = 0.;               ///< the whole call
+};
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+/// A texture atlas: a uv per polygon corner and a chart per polygon, in the input's order.
+struct Atlas
+{
+  std::vector<std::vector<std::array<double, 2> > > uv; ///< per polygon, per corner: in \f$ [0,1]^2 \f$
+  std::vector<std::size_t> chart;                       ///< per polygon
+  Atlas_report report;                                  ///< what the call did
+};
+
+namespace internal {
+
+// The settings of make_atlas() read from named parameters.
+struct Atlas_settings
+{
+  double max_stretch = 1.05;
+  Packing_settings packing;
+  Chart_parameterization_settings chart;
+};
+
+template <typename NamedParameters>
+Atlas_settings read_atlas_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Atlas_settings s;
+  s.max_stretch = choose_parameter(get_parameter(np, internal_np::max_stretch), s.max_stretch);
+  s.packing.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.packing.resolution);
+  s.packing.gutter = choose_parameter(get_parameter(np, internal_np::gutter), s.packing.gutter);
+  s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
+  return s;
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The stages after the input: charts, their maps, the packing, the uv of the corners of the
+// triangles (`corner_written`: per polygon corner, whether it got one; `vertex_uv`: a uv of
+// every welded vertex in a chart).
+inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons, const Atlas_settings& settings,
+                        Atlas& atlas, std::vector<std::vector<char> >& corner_written,
+                        std::unordered_map<int, Vec2>& vertex_uv)
+{
+  Atlas_report& r = atlas.report;
+  const std::size_t nt = m.vertex.size();
+  auto t0 = std::chrono::steady_clock::now();
+  Chart_growing g(m);
+  std::vector<char> allowed(nt, 1);
+  const double first_angle = 70. * 3.14159265358979323846 / 180.;
+  int n = g.grow(allowed, 0, first_angle, 0);
+  std::vector<double> angle(std::size_t(n), first_angle);
+  r.seconds_cutting += seconds_since(t0);
+
+  // flatten every chart; a chart above the bound (or that cannot be flattened) is grown again
+  // from its own triangles, with a narrower normal cone and fewer polygons
+  std::vector<Chart_map> charts(static_cast<std::size_t>(n));
+  std::vector<std::vector<std::size_t> > members;
+  auto collect = [&](int first, int count) {
+    members.resize(std::size_t(first + count));
+    for(int c = first; c < first + count; ++c) members[std::size_t(c)].clear();
+    for(std::size_t t = 0; t < nt; ++t)
+      if(g.chart(t) >= first)
+        members[std::size_t(g.chart(t))].push_back(t);
+  };
+  collect(0, n);
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    if(charts[c].triangles.empty())
+      charts[c].triangles = members[c];
+    auto t1 = std::chrono::steady_clock::now();
+    parameterize_chart(m, g, charts[c], settings.chart);
+    r.seconds_parameterization += seconds_since(t1);
+    if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
+      continue;
+    const std::vector<std::size_t> triangles = charts[c].triangles;
+    const bool ok = charts[c].ok;
+    std::size_t units = 1;
+    for(std::size_t i = 1; i < triangles.size(); ++i)
+      units += m.polygon[triangles[i]] != m.polygon[triangles[i - 1]];
+    if(units < 2) {
+      if(!ok) { // one polygon that could not be flattened: its triangles laid out alone
+        for(std::size_t i = 0; i < triangles.size(); ++i) {
+          Chart_map single;
+          single.triangles = {triangles[i]};
+          make_chart_vertices(m, g, single);
+          layout_single_triangle(single);
+          single.ok = true;
+          single.l2 = 1.;
+          if(i == 0) charts[c] = single;
+          else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
+        }
+      }
+      continue;
+    }
+    t1 = std::chrono::steady_clock::now();
+    allowed.assign(nt, 0);
+    for(std::size_t t : triangles) allowed[t] = 1;
+    const double a = angle[c] * 0.6;
+    const std::size_t cap = ok ? units - 1 : (units + 1) / 2;
+    const int first = int(charts.size());
+    const int made = g.grow(allowed, first, a, cap);
+    collect(first, made);
+    charts.resize(std::size_t(first + made));
+    angle.resize(std::size_t(first + made), a);
+    charts[c] = Chart_map(); // emptied: its triangles are in the new charts
+    r.seconds_cutting += seconds_since(t1);
+  }
+
+  // pack the charts that hold triangles
+  auto t2 = std::chrono::steady_clock::now();
+  std::vector<std::size_t> kept;
+  std::vector<std::vector<Vec2> > uv;
+  std::vector<double> area_uv, area_3d;
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    if(charts[c].triangles.empty()) continue;
+    kept.push_back(c);
+    double a2 = 0., a3 = 0.;
+    for(const Triangle& t : charts[c].flat.tri) {
+      const Triangle_stretch s = triangle_stretch(charts[c].flat.xyz[t[0]], charts[c].flat.xyz[t[1]], charts[c].flat.xyz[t[2]],
+                                                  charts[c].uv[t[0]], charts[c].uv[t[1]], charts[c].uv[t[2]]);
+      a2 += std::abs(s.area_uv);
+      a3 += s.area_3d;
+    }
+    area_uv.push_back(a2);
+    area_3d.push_back(a3);
+    uv.push_back(charts[c].uv);
+  }
+  const Packing_result packed = pack_charts(uv, area_uv, area_3d, settings.packing);
+  r.utilization = packed.utilization;
+  r.charts = kept.size();
+  r.seconds_packing = seconds_since(t2);
+
+  // per polygon corner, in the input's order
+  atlas.chart.assign(number_of_polygons, 0);
+  corner_written.resize(number_of_polygons);
+  for(std::size_t p = 0; p < number_of_polygons; ++p)
+    corner_written[p].assign(atlas.uv[p].size(), 0);
+  Flat_triangles all;
+  std::vector<Vec2> all_uv;
+  for(std::size_t i = 0; i < kept.size(); ++i) {
+    const Chart_map& chart = charts[kept[i]];
+    for(std::size_t j = 0; j < chart.triangles.size(); ++j) {
+      const std::size_t t = chart.triangles[j];
+      const std::size_t p = m.polygon[t];
+      atlas.chart[p] = i;
+      for(int k = 0; k < 3; ++k) {
+        const Vec2& q = uv[i][std::size_t(chart.corner_vertex[3 * j + std::size_t(k)])];
+        const std::size_t corner = std::size_t(m.corner[t][std::size_t(k)]);
+        atlas.uv[p][corner] = q;
+        corner_written[p][corner] = 1;
+        vertex_uv.emplace(m.vertex[t][std::size_t(k)], q);
+        all.xyz.push_back(m.xyz[std::size_t(m.vertex[t][std::size_t(k)])]);
+        all_uv.push_back(q);
+      }
+      const int b = int(all.xyz.size());
+      all.tri.push_back({b - 3, b - 2, b - 1});
+    }
+  }
+  r.charts = kept.size();
+
+  Flat_stretch measure;
+  const Flat_stretch_summary s = measure.evaluate(all, all_uv);
+  r.l2_stretch = s.l2;
+  r.linf_stretch = s.linf;
+  r.flipped_faces = 0;
+  for(const Triangle& t : all.tri) {
+    const Vec2 &a = all_uv[std::size_t(t[0])], &b = all_uv[std::size_t(t[1])], &c = all_uv[std::size_t(t[2])];
+    if((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]) < 0.)
+      ++r.flipped_faces;
+  }
+
+  // seams: edges of two or more sides that are not one glued pair
+  struct Hash { std::size_t operator()(const std::pair<int, int>& e) const { return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^ e.second); } };
+  std::unordered_map<std::pair<int, int>, std::pair<int, int>, Hash> edges; // sides, glued sides
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int k = 0; k < 3; ++k) {
+      const int a = m.vertex[t][std::size_t(k)], b = m.vertex[t][std::size_t((k + 1) % 3)];
+      auto& e = edges[std::make_pair((std::min)(a, b), (std::max)(a, b))];
+      ++e.first;
+      e.second += g.glued(int(3 * t) + k);
+    }
+  for(const auto& e : edges) {
+    const double l = norm3(sub3(m.xyz[std::size_t(e.first.first)], m.xyz[std::size_t(e.first.second)]));
+    r.edge_length += l;
+    if(e.second.first >= 2 && !(e.second.first == 2 && e.second.second == 2))
+      r.seam_length += l;
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+///
+/// Makes a texture atlas of a polygon soup: any polygons (triangulated inside), any number of
+/// parts, any genus, boundaries, non-manifold edges and vertices, vertices repeated at one
+/// position (welded). The soup is cut into charts that are topological disks; each chart is
+/// flattened by this package (`Stretch_minimizing_parameterizer_3` with
+/// `Stretch_minimizing_preset::LOWEST_STRETCH`, then Newton steps on Sander's stretch with a free
+/// border: no face flips, the border never crosses itself); a chart whose normalized L2 stretch
+/// is above `max_stretch` is cut further. The charts are then scaled to one texel density,
+/// turned to their smallest bounding rectangle and packed into the unit square with a gutter,
+/// without overlap.
+///
+/// Every polygon gets a uv for each of its corners and a chart, the polygons of fewer than
+/// three distinct positions too (with zero uv area). The triangles of one polygon stay in one
+/// chart.
+///
+/// \tparam PointRange a range of 3D points (`x()`, `y()`, `z()`)
+/// \tparam PolygonRange a range of ranges of vertex indices
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param points the vertex positions
+/// \param polygons the polygons, as indices into `points`
+/// \param np an optional sequence of named parameters among the ones below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{max_stretch}
+///     \cgalParamDescription{a chart whose normalized L2 stretch is above this bound is cut further}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`1.05`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{resolution}
+///     \cgalParamDescription{texels along a side of the square texture the gutter is measured in}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`1024`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{gutter}
+///     \cgalParamDescription{texels left between two charts (half of it along the sides of the square)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{polish_iterations}
+///     \cgalParamDescription{free-border Newton steps per chart}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`10`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the atlas; its `report.status` is `OK`, `ERROR_EMPTY_MESH` (no polygon) or
+/// `ERROR_WRONG_PARAMETER` (a coordinate that is not finite, an index out of range, a bad
+/// option: `report.message` says which); on an error `uv` and `chart` are empty.
+template <typename PointRange, typename PolygonRange, typename NamedParameters = parameters::Default_named_parameters>
+Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
+                 const NamedParameters& np = parameters::default_values())
+{
+  const auto start = std::chrono::steady_clock::now();
+  Atlas atlas;
+  Atlas_report& r = atlas.report;
+  const internal::Atlas_settings settings = internal::read_atlas_settings(np);
+  auto fail = [&](Error_code e, const std::string& why) {
+    Atlas a;
+    a.report.status = e;
+    a.report.message = why;
+    a.report.seconds = internal::seconds_since(start);
+    return a;
+  };
+  if(!(settings.max_stretch >= 1.) || !std::isfinite(settings.max_stretch))
+    return fail(ERROR_WRONG_PARAMETER, "max_stretch must be a finite number of at least 1");
+  if(settings.packing.resolution < 1 || !(settings.packing.gutter >= 0.) || !std::isfinite(settings.packing.gutter) ||
+     settings.packing.gutter * 4. >= double(settings.packing.resolution))
+    return fail(ERROR_WRONG_PARAMETER, "the resolution must be positive and the gutter at least 0 and well below the resolution");
+  if(polygons.size() == 0)
+    return fail(ERROR_EMPTY_MESH, "the soup has no polygon");
+
+  internal::Atlas_triangles m;
+  const std::string why = internal::make_atlas_triangles(points, polygons, m);
+  if(!why.empty())
+    return fail(ERROR_WRONG_PARAMETER, why);
+  r.triangles = m.vertex.size();
+  r.welded_vertices = m.welded_vertices;
+  r.flat_polygons = m.flat_polygons.size();
+  atlas.uv.resize(polygons.size());
+  std::size_t p = 0;
+  for(const auto& polygon : polygons)
+    atlas.uv[p++].assign(polygon.size(), std::array<double, 2>{0., 0.});
+  r.seconds_input = internal::seconds_since(start);
+
+  std::vector<std::vector<char> > written;
+  std::unordered_map<int, internal::Vec2> vertex_uv;
+  internal::build_atlas(m, polygons.size(), settings, atlas, written, vertex_uv);
+  // corners left out of the triangles (repeated, or of polygons without area): the uv of their
+  // position elsewhere in the polygon, else of that position in some chart, else the origin
+  p = 0;
+  for(const auto& polygon : polygons) {
+    std::size_t k = 0;
+    for(const auto corner : polygon) {
+      if(!written[p][k]) {
+        const int v = m.weld[std::size_t(corner)];
+        bool found = false;
+        std::size_t j = 0;
+        for(const auto other : polygon) {
+          if(written[p][j] && m.weld[std::size_t(other)] == v) {
+            atlas.uv[p][k] = atlas.uv[p][j];
+            found = true;
+            break;
+          }
+          ++j;
+        }
+        if(!found) {
+          const auto it = vertex_uv.find(v);
+          if(it != vertex_uv.end())
+            atlas.uv[p][k] = it->second;
+        }
+      }
+      ++k;
+    }
+    ++p;
+  }
+  r.seconds = internal::seconds_since(start);
+  return atlas;
+}
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_ATLAS_H

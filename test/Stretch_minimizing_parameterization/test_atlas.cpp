@@ -1,0 +1,262 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// make_atlas() on what users have: closed meshes of genus 0 to 2, several parts, holes,
+// non-manifold edges and vertices, quads and larger polygons, repeated vertices, polygons
+// without area; and on what it must refuse. Every atlas is checked by atlas_checks.h: uv in the
+// unit square, no flipped or flat triangle, no overlap (exact), every polygon written.
+
+#include "smp_test_util.h"
+#include "atlas_checks.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <iostream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+typedef CGAL::Simple_cartesian<double>::Point_3 Point;
+typedef std::vector<std::size_t> Polygon;
+
+struct Soup
+{
+  std::string name;
+  std::vector<Point> points;
+  std::vector<Polygon> polygons;
+};
+
+// A torus of genus 1 (n x m quads, split into triangles unless `quads`).
+Soup torus(int n, int m, bool quads)
+{
+  Soup s{quads ? "torus (quads)" : "torus", {}, {}};
+  const double pi = 3.14159265358979323846;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      const double a = 2 * pi * i / n, b = 2 * pi * j / m;
+      s.points.emplace_back((2 + 0.7 * std::cos(b)) * std::cos(a), (2 + 0.7 * std::cos(b)) * std::sin(a), 0.7 * std::sin(b));
+    }
+  auto id = [&](int i, int j) { return std::size_t(((i + n) % n) * m + (j + m) % m); };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      if(quads) s.polygons.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+      else {
+        s.polygons.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+        s.polygons.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+      }
+    }
+  return s;
+}
+
+// A closed sphere (latitude-longitude, triangle fans at the poles).
+Soup sphere(int n, int m)
+{
+  Soup s{"sphere", {}, {}};
+  const double pi = 3.14159265358979323846;
+  s.points.emplace_back(0, 0, 1);
+  for(int i = 1; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      const double t = pi * i / n, p = 2 * pi * j / m;
+      s.points.emplace_back(std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t));
+    }
+  s.points.emplace_back(0, 0, -1);
+  const std::size_t south = s.points.size() - 1;
+  auto id = [&](int i, int j) { return std::size_t(1 + (i - 1) * m + (j + m) % m); };
+  for(int j = 0; j < m; ++j) {
+    s.polygons.push_back({0, id(1, j), id(1, j + 1)});
+    s.polygons.push_back({south, id(n - 1, j + 1), id(n - 1, j)});
+  }
+  for(int i = 1; i + 1 < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      s.polygons.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
+      s.polygons.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
+    }
+  return s;
+}
+
+// Two soups side by side, as one.
+Soup join(const Soup& a, const Soup& b, const std::string& name, double shift)
+{
+  Soup s = a;
+  s.name = name;
+  for(const Point& p : b.points) s.points.emplace_back(p.x() + shift, p.y(), p.z());
+  for(Polygon q : b.polygons) {
+    for(std::size_t& v : q) v += a.points.size();
+    s.polygons.push_back(q);
+  }
+  return s;
+}
+
+// Non-manifold: three squares of triangles sharing one edge (a book), and two tetrahedra
+// sharing a vertex; every vertex repeated once per polygon (welded by the atlas).
+Soup non_manifold()
+{
+  Soup s{"non-manifold book, bowtie, unwelded", {}, {}};
+  auto tri = [&](Point a, Point b, Point c) {
+    const std::size_t k = s.points.size();
+    s.points.push_back(a); s.points.push_back(b); s.points.push_back(c);
+    s.polygons.push_back({k, k + 1, k + 2});
+  };
+  const Point o(0, 0, 0), top(0, 0, 1);
+  for(const Point& far : {Point(1, 0, 0), Point(-0.5, 0.8, 0), Point(-0.5, -0.8, 0)}) {
+    tri(o, far, top);
+    tri(far, Point(far.x(), far.y(), 1), top);
+  }
+  const Point apex(3, 0, 0);
+  for(int side = -1; side <= 1; side += 2) {
+    const Point a(3 + side, 1, 0), b(3 + side, -1, 0), c(3 + side, 0, side);
+    tri(apex, a, b); tri(apex, b, c); tri(apex, c, a); tri(a, c, b);
+  }
+  return s;
+}
+
+// A double torus: two tori whose touching quads are removed and whose holes are bridged
+// by a tube of quads (genus 2).
+Soup double_torus()
+{
+  const int n = 24, m = 12;
+  Soup a = torus(n, m, true), b = torus(n, m, true);
+  // remove quad (i=0, j=0) of a and the quad facing it on b, and bridge the two square holes
+  Soup s = join(a, b, "double torus (quads)", 5.8);
+  const std::size_t na = a.points.size();
+  // quad of a at i = 0, j = 0 faces +x; b is shifted by 5.8: its quad facing -x is at i = n / 2, j = 0
+  const std::size_t qa = 0, qb = std::size_t(n) * std::size_t(m) + std::size_t(n / 2) * std::size_t(m);
+  const Polygon ha = s.polygons[qa], hb = s.polygons[qb];
+  s.polygons.erase(s.polygons.begin() + long(qb));
+  s.polygons.erase(s.polygons.begin() + long(qa));
+  (void)na;
+  // ha = (p0, p1, p2, p3) runs one way, hb the other: bridge sides k of both
+  for(int k = 0; k < 4; ++k) {
+    const std::size_t a0 = ha[std::size_t(k)], a1 = ha[std::size_t((k + 1) % 4)];
+    // the vertex of hb facing a vertex of ha: mirrored in x
+    auto facing = [&](std::size_t v) {
+      std::size_t best = hb[0];
+      double d = HUGE_VAL;
+      for(std::size_t w : hb) {
+        const double e = std::abs(s.points[w].y() - s.points[v].y()) + std::abs(s.points[w].z() - s.points[v].z());
+        if(e < d) { d = e; best = w; }
+      }
+      return best;
+    };
+    s.polygons.push_back({a1, a0, facing(a0), facing(a1)});
+  }
+  return s;
+}
+
+// Polygons of all sizes: a fan of a hexagon and a pentagon, a polygon with a repeated
+// corner, a polygon of one point, a triangle with two equal corners.
+Soup polygons()
+{
+  Soup s{"polygons and flat ones", {}, {}};
+  const double pi = 3.14159265358979323846;
+  for(int k = 0; k < 6; ++k) s.points.emplace_back(std::cos(k * pi / 3), std::sin(k * pi / 3), 0.1 * (k % 2));
+  s.points.emplace_back(3, 0, 0);
+  s.points.emplace_back(3, 1, 0);
+  s.points.emplace_back(3.5, 2, 0.2);
+  s.points.emplace_back(2.5, 2, 0.1);
+  s.points.emplace_back(2, 1, 0);
+  s.polygons.push_back({0, 1, 2, 3, 4, 5});
+  s.polygons.push_back({6, 7, 8, 9, 10});
+  s.polygons.push_back({6, 6, 7, 7, 1});         // repeated corners: a triangle (6, 7, 1)... crossing the others in 3D is fine
+  s.polygons.push_back({2, 2, 2});                // one point
+  s.polygons.push_back({3, 4, 3});                // a segment
+  return s;
+}
+
+void run(const Soup& s, double max_l2)
+{
+  const SMP::Atlas atlas = SMP::make_atlas(s.points, s.polygons);
+  const SMP::Atlas_report& r = atlas.report;
+  SMP_CHECK(r.status == SMP::OK, s.name << ": " << r.message);
+  if(r.status != SMP::OK) return;
+  SMP_CHECK(atlas.uv.size() == s.polygons.size() && atlas.chart.size() == s.polygons.size(), s.name);
+  // fans of the polygons; their 3D area decides whether the uv must be positive
+  std::vector<std::array<std::size_t, 4> > tri;
+  std::vector<char> positive;
+  for(std::size_t p = 0; p < s.polygons.size(); ++p) {
+    const Polygon& q = s.polygons[p];
+    SMP_CHECK(atlas.uv[p].size() == q.size(), s.name << ": polygon " << p);
+    if(q.size() == 3) {
+      tri.push_back({p, 0, 1, 2});
+      const Point &a = s.points[q[0]], &b = s.points[q[1]], &c = s.points[q[2]];
+      positive.push_back(CGAL::squared_area(a, b, c) > 0.);
+    }
+  }
+  const smp_test::Atlas_check c = smp_test::check_atlas(atlas, tri, positive);
+  SMP_CHECK(c.outside == 0, s.name << ": " << c.outside << " corners outside the unit square");
+  SMP_CHECK(c.not_positive == 0, s.name << ": " << c.not_positive << " triangles flipped or flat in uv");
+  SMP_CHECK(c.overlaps == 0, s.name << ": " << c.overlaps << " overlapping pairs");
+  SMP_CHECK(c.wrong_size == 0, s.name);
+  SMP_CHECK(r.flipped_faces == 0, s.name << ": " << r.flipped_faces);
+  SMP_CHECK(r.l2_stretch >= 1. && r.l2_stretch <= max_l2, s.name << ": L2 " << r.l2_stretch);
+  SMP_CHECK(r.utilization > 0. && r.utilization <= 1., s.name << ": utilization " << r.utilization);
+  std::cout << s.name << ": " << s.polygons.size() << " polygons, " << r.charts << " charts, L2 " << r.l2_stretch
+            << ", Linf " << r.linf_stretch << ", seams " << 100. * r.seam_length / r.edge_length
+            << "% of the edge length, utilization " << r.utilization << ", " << r.seconds << " s (cut "
+            << r.seconds_cutting << ", flatten " << r.seconds_parameterization << ", pack " << r.seconds_packing << ")"
+            << std::endl;
+}
+
+Soup read(const std::string& name)
+{
+  Soup s{name, {}, {}};
+  const bool ok = CGAL::IO::read_polygon_soup(smp_test::data_file(name), s.points, s.polygons);
+  SMP_CHECK(ok, name);
+  return s;
+}
+
+void bad_input()
+{
+  std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  std::vector<Polygon> polygons = {{0, 1, 2}};
+  SMP::Atlas a = SMP::make_atlas(points, std::vector<Polygon>());
+  SMP_CHECK(a.report.status == SMP::ERROR_EMPTY_MESH && a.uv.empty(), a.report.message);
+  std::vector<Polygon> out_of_range = {{0, 1, 3}};
+  a = SMP::make_atlas(points, out_of_range);
+  SMP_CHECK(a.report.status == SMP::ERROR_WRONG_PARAMETER && a.uv.empty(), a.report.message);
+  for(double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    std::vector<Point> p = points;
+    p[1] = Point(bad, 0, 0);
+    a = SMP::make_atlas(p, polygons);
+    SMP_CHECK(a.report.status == SMP::ERROR_WRONG_PARAMETER && a.uv.empty(), a.report.message);
+  }
+  a = SMP::make_atlas(points, polygons, SMP::parameters::max_stretch(0.5));
+  SMP_CHECK(a.report.status == SMP::ERROR_WRONG_PARAMETER, a.report.message);
+  a = SMP::make_atlas(points, polygons, SMP::parameters::gutter(-1.));
+  SMP_CHECK(a.report.status == SMP::ERROR_WRONG_PARAMETER, a.report.message);
+  a = SMP::make_atlas(points, polygons, SMP::parameters::resolution(0u));
+  SMP_CHECK(a.report.status == SMP::ERROR_WRONG_PARAMETER, a.report.message);
+  // one triangle: an isometric chart
+  a = SMP::make_atlas(points, polygons);
+  SMP_CHECK(a.report.status == SMP::OK && a.report.charts == 1 && std::abs(a.report.l2_stretch - 1.) < 1e-9,
+            a.report.l2_stretch);
+}
+
+int main(int argc, char** argv)
+{
+  if(argc > 1) { // a mesh given on the command line
+    for(int i = 1; i < argc; ++i) {
+      Soup s{argv[i], {}, {}};
+      if(!CGAL::IO::read_polygon_soup(argv[i], s.points, s.polygons)) { std::cerr << "cannot read " << argv[i] << "\n"; continue; }
+      run(s, 1.05);
+    }
+    return smp_test::summary();
+  }
+  bad_input();
+  run(torus(40, 16, false), 1.05);
+  run(torus(40, 16, true), 1.05);
+  run(double_torus(), 1.05);
+  run(sphere(16, 32), 1.05);
+  run(join(sphere(12, 24), torus(30, 12, false), "sphere and torus", 4.), 1.05);
+  run(non_manifold(), 1.05);
+  run(polygons(), 1.05);
+  for(const char* name : {"bear.off", "pig.off", "holes.off", "mannequin-devil.off", "three_peaks.off"})
+    run(read(name), 1.05);
+  return smp_test::summary();
+}
