@@ -147,7 +147,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     allowed.assign(nt, 0);
     for(std::size_t t : triangles) allowed[t] = 1;
     const double a = angle[c] * 0.6;
-    const std::size_t cap = ok ? units - 1 : (units + 1) / 2;
+    const std::size_t cap = (units + 1) / 2;
     const int first = int(charts.size());
     const int made = g.grow(allowed, first, a, cap);
     collect(first, made);
