@@ -28,6 +28,8 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize_components.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
+#include <CGAL/IO/polygon_soup_io.h>
 
 #include <algorithm>
 #include <chrono>
@@ -80,6 +82,12 @@ const char* usage =
   "  --threads N           threads of u0/u1/uopt on large meshes (default 0: one per core)\n"
   "  --cut                 open a closed genus-0 mesh along a seam first\n"
   "  --charts              parameterize each connected component into its own chart\n"
+  "  --atlas               any mesh (closed, any genus, several parts, non-manifold, polygons):\n"
+  "                        cut into charts, each flattened with a free border, packed into\n"
+  "                        the unit square; the OBJ keeps the input's vertices and faces\n"
+  "  --max-stretch X       atlas: cut further every chart above this L2 stretch (default 1.05)\n"
+  "  --resolution N        atlas: texels along a side of the texture (default 1024)\n"
+  "  --gutter T            atlas: texels between charts (default 2)\n"
   "  --size PX             picture size in pixels (default 800)\n"
   "  --up A                the model's up axis in the pictures: x, y or z (default z)\n"
   "  --no-pictures         write no PNG picture\n"
@@ -92,6 +100,9 @@ struct Options
   double eta = 1., polish_time = 0.;
   int iterations = 20, descent = -1, polish = 0, size = 800, up = 2, threads = 0; // descent < 0: the preset's
   bool cut = false, charts = false, pictures = true, quiet = false, free_border = false;
+  bool atlas = false;
+  double max_stretch = 1.05, gutter = 2.;
+  int resolution = 1024;
 };
 
 // One clear line, then the exit status: 2 for a wrong command line, 1 for a failure.
@@ -164,6 +175,20 @@ Options parse(int argc, char** argv)
     }
     else if(a == "--cut") o.cut = true;
     else if(a == "--charts") o.charts = true;
+    else if(a == "--atlas") o.atlas = true;
+    else if(a == "--max-stretch") {
+      o.max_stretch = number(a, value(i));
+      if(!(o.max_stretch >= 1.) || !std::isfinite(o.max_stretch)) die("option --max-stretch: give a number of at least 1", 2);
+    }
+    else if(a == "--resolution") {
+      const double n = number(a, value(i));
+      if(n < 16 || n > 65536 || n != std::floor(n)) die("option --resolution: give a whole number of texels from 16 to 65536", 2);
+      o.resolution = int(n);
+    }
+    else if(a == "--gutter") {
+      o.gutter = number(a, value(i));
+      if(!(o.gutter >= 0. && o.gutter <= 64.)) die("option --gutter: give a number of texels from 0 to 64", 2);
+    }
     else if(a == "--no-pictures") o.pictures = false;
     else if(a == "-q" || a == "--quiet") o.quiet = true;
     else if(!a.empty() && a[0] == '-') die("unknown option " + a + " (run without arguments for the options)", 2);
@@ -194,8 +219,10 @@ Options parse(int argc, char** argv)
     die("--free-border is a mode of the polish: give --descent N, --polish N or --polish-time S too", 2);
   if(!(o.eta > 0. && o.eta <= 1.))
     die("option --eta must be in (0, 1]", 2);
+  if(o.atlas && (o.cut || o.charts))
+    die("--atlas cuts and lays out every part itself: leave out --cut and --charts", 2);
   if(o.output.empty())
-    o.output = fs::path(o.input).stem().string() + "_uv";
+    o.output = fs::path(o.input).stem().string() + (o.atlas ? "_atlas" : "_uv");
   return o;
 }
 
@@ -315,10 +342,15 @@ Mesh cut_open(Mesh& closed)
 
 } // namespace
 
+#include "smp_atlas_command.h"
+
 int main(int argc, char** argv)
 {
   const Options o = parse(argc, argv);
   const auto start = std::chrono::steady_clock::now();
+
+  if(o.atlas)
+    return run_atlas(o);
 
   // ---- read and check
   const std::string ext = fs::path(o.input).extension().string();
@@ -330,10 +362,10 @@ int main(int argc, char** argv)
     die("cannot open " + o.input);
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(o.input, mesh, CGAL::parameters::verbose(false)) || faces(mesh).empty())
-    die("cannot read a polygon mesh from " + o.input);
+    die("cannot read a polygon mesh from " + o.input + " (a soup with non-manifold edges, or an inconsistent orientation: add --atlas)");
   const double read_seconds = seconds_since(start);
   if(!CGAL::is_triangle_mesh(mesh))
-    die(o.input + " is not a triangle mesh: triangulate it first");
+    die(o.input + " is not a triangle mesh: add --atlas (it takes polygons), or triangulate it first");
   for(vertex_descriptor v : vertices(mesh)) {
     const Point_3& p = mesh.point(v);
     if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
@@ -345,9 +377,9 @@ int main(int argc, char** argv)
   PMP::extract_boundary_cycles(mesh, std::back_inserter(loops));
   const std::size_t input_vertices = num_vertices(mesh), input_faces = num_faces(mesh);
   if(components > 1 && !o.charts)
-    die(o.input + " has " + std::to_string(components) + " connected components: add --charts to map each into its own chart");
+    die(o.input + " has " + std::to_string(components) + " connected components: add --atlas for a texture atlas, or --charts to map each component into its own chart");
   if(loops.empty() && !o.cut)
-    die(o.input + " is a closed surface: add --cut to open it along a seam first (genus 0 only)");
+    die(o.input + " is a closed surface: add --atlas for a texture atlas, or --cut to open it along one seam (genus 0 only)");
   if(o.cut && o.charts)
     die("--cut and --charts do not go together: cut the components one at a time");
   if(o.cut) {

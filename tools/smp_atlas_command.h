@@ -1,0 +1,169 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smp-parameterize --atlas: any polygon soup in, a texture atlas out. Part of
+// smp_parameterize.cpp (its options, messages and JSON helpers), kept apart so that the disk
+// path and the atlas path each read in one place.
+
+#ifndef SMP_TOOLS_ATLAS_COMMAND_H
+#define SMP_TOOLS_ATLAS_COMMAND_H
+
+namespace {
+
+// Writes `text` to `file` through a temporary name, so that a failure never leaves a file that
+// looks complete.
+void write_atomically(const fs::path& file, const std::string& text)
+{
+  const fs::path temporary = file.string() + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    out.flush();
+    if(!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      die("cannot write " + file.string());
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, file, ec);
+  if(ec)
+    die("cannot write " + file.string() + ": " + ec.message());
+}
+
+int run_atlas(const Options& o)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const std::string ext = fs::path(o.input).extension().string();
+  std::string lower = ext;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(lower != ".off" && lower != ".obj" && lower != ".ply" && lower != ".stl")
+    die("unknown file format '" + ext + "' of " + o.input + " (read: .off, .obj, .ply, .stl)");
+  if(!std::ifstream(o.input))
+    die("cannot open " + o.input);
+  std::vector<Point_3> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  if(!CGAL::IO::read_polygon_soup(o.input, points, polygons, CGAL::parameters::verbose(false)) || polygons.empty())
+    die("cannot read polygons from " + o.input);
+  const double read_seconds = seconds_since(start);
+  if(!o.quiet)
+    std::cout << "read " << points.size() << " vertices, " << polygons.size() << " polygons" << std::endl;
+
+  namespace P = SMP::parameters;
+  const SMP::Atlas atlas = SMP::make_atlas(points, polygons,
+      P::max_stretch(o.max_stretch, P::resolution(unsigned(o.resolution), P::gutter(o.gutter))));
+  const SMP::Atlas_report& r = atlas.report;
+  if(r.status != SMP::OK)
+    die(std::string("atlas failed: ") + SMP::error_message(r.status) + ": " + r.message);
+  if(!o.quiet)
+    std::cout << "atlas: " << r.charts << " charts, L2 stretch " << std::setprecision(6) << r.l2_stretch << ", Linf "
+              << r.linf_stretch << ", seams " << std::setprecision(3) << 100. * r.seam_length / r.edge_length
+              << "% of the edge length, utilization " << r.utilization << ", " << r.seconds << " s" << std::endl;
+
+  // ---- write: the input's vertices and polygons, a uv per corner
+  const auto t2 = std::chrono::steady_clock::now();
+  std::error_code ec;
+  fs::create_directories(o.output, ec);
+  if(ec)
+    die("cannot create the output folder " + o.output + ": " + ec.message());
+  const std::string name = fs::path(o.input).stem().string();
+  const fs::path dir(o.output);
+  std::vector<std::string> outputs;
+  {
+    std::ostringstream obj;
+    obj.precision(17);
+    obj << "# " << name << ": texture atlas by smp-parameterize --atlas (" << r.charts << " charts)\nmtllib " << name << ".mtl\n";
+    for(const Point_3& p : points)
+      obj << "v " << p << "\n";
+    for(const auto& polygon : atlas.uv)
+      for(const auto& q : polygon)
+        obj << "vt " << q[0] << " " << q[1] << "\n";
+    obj << "usemtl checker\n";
+    std::size_t vt = 1;
+    for(const auto& polygon : polygons) {
+      obj << "f";
+      for(std::size_t v : polygon)
+        obj << " " << v + 1 << "/" << vt++;
+      obj << "\n";
+    }
+    write_atomically(dir / (name + ".obj"), obj.str());
+    write_atomically(dir / (name + ".mtl"), "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd checker.png\n");
+    outputs.push_back(name + ".obj");
+    outputs.push_back(name + ".mtl");
+    if(!smp_tools::write_checkerboard_png((dir / "checker.png").string(), 512, 16))
+      die("cannot write " + (dir / "checker.png").string());
+    outputs.push_back("checker.png");
+  }
+  const double write_seconds = seconds_since(t2);
+
+  // ---- pictures: the polygons as fans, coloured by the stretch of their triangles
+  const auto t3 = std::chrono::steady_clock::now();
+  if(o.pictures) {
+    smp_tools::Textured_mesh picture;
+    for(const Point_3& p : points)
+      picture.xyz.push_back({p.x(), p.y(), p.z()});
+    double a2 = 0., a3 = 0.;
+    for(std::size_t f = 0; f < polygons.size(); ++f)
+      for(std::size_t k = 1; k + 1 < polygons[f].size(); ++k) {
+        const std::size_t i[3] = {0, k, k + 1};
+        std::array<std::array<double, 2>, 3> uv;
+        for(int j = 0; j < 3; ++j) uv[j] = atlas.uv[f][i[j]];
+        const Point_3 &a = points[polygons[f][0]], &b = points[polygons[f][k]], &c = points[polygons[f][k + 1]];
+        const SMP::Face_stretch s = SMP::face_stretch(a, b, c, Point_2(uv[0][0], uv[0][1]), Point_2(uv[1][0], uv[1][1]),
+                                                      Point_2(uv[2][0], uv[2][1]));
+        if(std::isfinite(s.l2) && s.area_3d > 0.) { a2 += std::abs(s.area_uv); a3 += s.area_3d; }
+        picture.faces.push_back({int(polygons[f][0]), int(polygons[f][k]), int(polygons[f][k + 1])});
+        picture.corner_uv.push_back(uv);
+        picture.face_stretch.push_back(std::isfinite(s.l2) ? s.l2 : 0.);
+      }
+    const double normalization = a3 > 0. ? std::sqrt(a2 / a3) : 1.;
+    for(double& s : picture.face_stretch) s *= normalization;
+    const std::string layout = name + "_uv_stretch.png";
+    if(!smp_tools::write_uv_layout_png((dir / layout).string(), picture, o.size))
+      die("cannot write " + layout);
+    outputs.push_back(layout);
+    const struct { const char* view; double yaw, pitch; } views[] = {{"front", 0, 10}, {"side", 90, 10}, {"three_quarter", -40, 20}};
+    for(const auto& view : views) {
+      const std::string file = name + "_checker_" + view.view + ".png";
+      const std::string error = smp_tools::render_surface_png((dir / file).string(), picture, o.size, o.size,
+                                                              o.up, view.yaw, view.pitch, true, 64);
+      if(!error.empty())
+        die("rendering " + file + ": " + error);
+      outputs.push_back(file);
+    }
+  }
+  const double render_seconds = seconds_since(t3);
+
+  // ---- report
+  std::ostringstream json;
+  json << "{\n  \"input\": " << json_string(o.input) << ",\n"
+       << "  \"mesh\": {\"vertices\": " << points.size() << ", \"polygons\": " << polygons.size()
+       << ", \"triangles\": " << r.triangles << ", \"welded_vertices\": " << r.welded_vertices
+       << ", \"flat_polygons\": " << r.flat_polygons << "},\n"
+       << "  \"method\": \"atlas\",\n"
+       << "  \"options\": {\"max_stretch\": " << json_number(o.max_stretch) << ", \"resolution\": " << o.resolution
+       << ", \"gutter\": " << json_number(o.gutter) << "},\n"
+       << "  \"status\": " << json_string(SMP::error_message(r.status)) << ",\n"
+       << "  \"atlas\": {\"charts\": " << r.charts << ", \"l2_stretch\": " << json_number(r.l2_stretch)
+       << ", \"linf_stretch\": " << json_number(r.linf_stretch) << ", \"flipped_faces\": " << r.flipped_faces
+       << ", \"seam_length\": " << json_number(r.seam_length) << ", \"edge_length\": " << json_number(r.edge_length)
+       << ", \"utilization\": " << json_number(r.utilization) << "},\n"
+       << "  \"seconds\": {\"read\": " << json_number(read_seconds) << ", \"input\": " << json_number(r.seconds_input)
+       << ", \"cutting\": " << json_number(r.seconds_cutting) << ", \"parameterization\": "
+       << json_number(r.seconds_parameterization) << ", \"packing\": " << json_number(r.seconds_packing)
+       << ", \"atlas\": " << json_number(r.seconds) << ", \"write\": " << json_number(write_seconds)
+       << ", \"pictures\": " << json_number(render_seconds) << "},\n"
+       << "  \"outputs\": [";
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    json << (i ? ", " : "") << json_string(outputs[i]);
+  json << "]\n}\n";
+  write_atomically(dir / "report.json", json.str());
+  if(!o.quiet)
+    std::cout << "wrote " << fs::absolute(dir).string() << "/{" << name << ".obj, report.json"
+              << (o.pictures ? ", *.png" : "") << "}" << std::endl;
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+#endif // SMP_TOOLS_ATLAS_COMMAND_H
