@@ -54,7 +54,7 @@ int run_atlas(const Options& o)
       P::max_stretch(o.max_stretch, P::resolution(unsigned(o.resolution), P::gutter(o.gutter))));
   const SMP::Atlas_report& r = atlas.report;
   if(r.status != SMP::OK)
-    die(std::string("atlas failed: ") + SMP::error_message(r.status) + ": " + r.message);
+    die("no atlas of " + o.input + ": " + SMP::error_message(r.status) + ": " + r.message);
   if(!o.quiet)
     std::cout << "atlas: " << r.charts << " charts, L2 stretch " << std::setprecision(6) << r.l2_stretch << ", Linf "
               << r.linf_stretch << ", seams " << std::setprecision(3) << 100. * r.seam_length / r.edge_length

@@ -9,6 +9,7 @@
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -209,9 +210,9 @@ void check_errors()
   check_error("unknown format", "mesh.xyz", "format");
   std::ofstream("quads.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n4 0 1 4 3\n4 1 2 5 4\n";
   check_error("quads", "quads.off", "triangle");
-  check_error("closed mesh", smp_test::data_file("bear.off"), "--cut");
+  check_error("closed mesh", smp_test::data_file("bear.off"), "--atlas");
   std::ofstream("two.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n";
-  check_error("two components", "two.off", "--charts");
+  check_error("two components", "two.off", "--atlas");
   check_error("eta out of range", smp_test::data_file("nefertiti.off") + " --eta 2", "eta");
   check_error("iterations not a number", smp_test::data_file("nefertiti.off") + " --iterations many", "iterations");
   check_error("threads not a whole number", smp_test::data_file("nefertiti.off") + " --threads 1.5", "threads");
@@ -222,15 +223,79 @@ void check_errors()
   check_error("free border alone", smp_test::data_file("nefertiti.off") + " --free-border", "--polish");
   check_error("negative polish time", smp_test::data_file("nefertiti.off") + " --polish-time -1", "polish-time");
   check_error("descent not a whole number", smp_test::data_file("nefertiti.off") + " --descent -3", "descent");
+  check_error("atlas with --cut", smp_test::data_file("bear.off") + " --atlas --cut", "--cut");
+  check_error("atlas stretch bound below 1", smp_test::data_file("bear.off") + " --atlas --max-stretch 0.9", "max-stretch");
+  check_error("atlas gutter not a number", smp_test::data_file("bear.off") + " --atlas --gutter wide", "gutter");
+  check_error("atlas resolution too small", smp_test::data_file("bear.off") + " --atlas --resolution 4", "resolution");
+  check_error("atlas of an unreadable file", "not_a_mesh.off --atlas", "cannot read");
   check_error("natural border folds", smp_test::data_file("three_peaks.off") + " --border natural --no-pictures -o out_fold", "one-to-one");
   std::ofstream("nan.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n";
   const Result nan = run("nan.off -o out_nan");
   SMP_CHECK(nan.status != 0 && std::count(nan.err.begin(), nan.err.end(), '\n') == 1, "NaN coordinate: " << nan.status << " " << nan.err);
+  check_error("atlas with a NaN coordinate", "nan.off --atlas -o out_nan_atlas", "nan.off");
+  SMP_CHECK(!fs::exists("out_nan_atlas/nan.obj"), "no OBJ written for a NaN coordinate");
+}
+
+// --atlas on what the disk path refuses (quads, a closed mesh, two parts): the OBJ keeps the
+// input's vertices and faces in order, a vt per corner in the unit square, and report.json
+// agrees with it.
+void check_atlas()
+{
+  std::ofstream("atlas_mix.off") << "OFF\n10 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n"
+                                    "5 0 0\n6 0 0\n5 1 0\n5 0 0\n4 0 1 4 3\n4 1 2 5 4\n3 6 7 8\n3 9 7 8\n";
+  for(const std::string& mesh : {std::string("atlas_mix.off"), smp_test::data_file("bear.off")}) {
+    const std::string dir = "out_atlas_" + fs::path(mesh).stem().string();
+    const Result r = run(mesh + " --atlas -q --no-pictures -o " + dir);
+    SMP_CHECK(r.status == 0, mesh << ": " << r.err);
+    if(r.status != 0) continue;
+    // the input as a soup, and the OBJ read back line by line
+    std::vector<Kernel::Point_3> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    CGAL::IO::read_polygon_soup(mesh, points, polygons);
+    std::ifstream obj(dir + "/" + fs::path(mesh).stem().string() + ".obj");
+    std::size_t v = 0, vt = 0, f = 0, bad = 0;
+    for(std::string line; std::getline(obj, line);) {
+      std::istringstream in(line);
+      std::string tag;
+      in >> tag;
+      if(tag == "v") {
+        double x, y, z;
+        in >> x >> y >> z;
+        bad += v >= points.size() || Kernel::Point_3(x, y, z) != points[v];
+        ++v;
+      } else if(tag == "vt") {
+        double s, t;
+        in >> s >> t;
+        bad += !(s >= 0. && s <= 1. && t >= 0. && t <= 1.);
+        ++vt;
+      } else if(tag == "f") {
+        std::size_t k = 0;
+        for(std::string corner; in >> corner; ++k) {
+          const std::size_t index = std::stoul(corner.substr(0, corner.find('/')));
+          bad += f >= polygons.size() || k >= polygons[f].size() || index != polygons[f][k] + 1 ||
+                 corner.find('/') == std::string::npos;
+        }
+        bad += f >= polygons.size() || k != polygons[f].size();
+        ++f;
+      }
+    }
+    std::size_t corners = 0;
+    for(const auto& p : polygons) corners += p.size();
+    SMP_CHECK(bad == 0 && v == points.size() && f == polygons.size() && vt == corners,
+              mesh << ": OBJ " << v << " v, " << vt << " vt, " << f << " f, " << bad << " wrong");
+    boost::property_tree::ptree json;
+    boost::property_tree::read_json(dir + "/report.json", json);
+    SMP_CHECK(json.get<std::string>("method") == "atlas" && json.get<std::size_t>("mesh.polygons") == polygons.size() &&
+              json.get<unsigned>("atlas.flipped_faces") == 0 && json.get<double>("atlas.l2_stretch") <= 1.05 &&
+              json.get<double>("atlas.utilization") > 0., mesh << ": report.json");
+    SMP_CHECK(!fs::exists(dir + "/report.json.part"), "no temporary file left");
+  }
 }
 
 int main()
 {
   check_outputs();
   check_errors();
+  check_atlas();
   return smp_test::summary();
 }
