@@ -196,7 +196,11 @@ void run(const Soup& s, double max_l2)
   SMP_CHECK(r.flipped_faces == 0, s.name << ": " << r.flipped_faces);
   SMP_CHECK(r.l2_stretch >= 1. && r.l2_stretch <= max_l2, s.name << ": L2 " << r.l2_stretch);
   SMP_CHECK(r.utilization > 0. && r.utilization <= 1., s.name << ": utilization " << r.utilization);
-  std::cout << s.name << ": " << s.polygons.size() << " polygons, " << r.charts << " charts, L2 " << r.l2_stretch
+  std::vector<std::size_t> size(r.charts, 0);
+  for(std::size_t c : atlas.chart) ++size[c];
+  std::size_t tiny = 0;
+  for(std::size_t n : size) tiny += n < 5;
+  std::cout << s.name << ": " << s.polygons.size() << " polygons, " << r.charts << " charts (" << tiny << " of fewer than 5 polygons), L2 " << r.l2_stretch
             << ", Linf " << r.linf_stretch << ", seams " << 100. * r.seam_length / r.edge_length
             << "% of the edge length, utilization " << r.utilization << ", " << r.seconds << " s (cut "
             << r.seconds_cutting << ", flatten " << r.seconds_parameterization << ", pack " << r.seconds_packing << ")"

@@ -149,7 +149,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     const double a = angle[c] * 0.6;
     const std::size_t cap = (units + 1) / 2;
     const int first = int(charts.size());
-    const int made = g.grow(allowed, first, a, cap);
+    const int made = g.grow(allowed, first, a, cap, 2);
     collect(first, made);
     charts.resize(std::size_t(first + made));
     angle.resize(std::size_t(first + made), a);

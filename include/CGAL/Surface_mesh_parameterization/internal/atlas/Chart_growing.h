@@ -110,7 +110,10 @@ public:
   // `max_angle` (radians) of the chart's mean normal, and while the chart holds fewer than
   // `max_units` polygons (0: no limit). Every allowed triangle ends in a chart. Returns the
   // number of charts made.
-  int grow(const std::vector<char>& allowed, int first_chart, double max_angle, std::size_t max_units = 0)
+  // Charts of fewer than `small_chart` polygons are then absorbed by a neighbour, while at
+  // least `keep` charts remain (2 when splitting a chart: one would undo the split).
+  int grow(const std::vector<char>& allowed, int first_chart, double max_angle, std::size_t max_units = 0,
+           int keep = 1)
   {
     const double cos_max = std::cos(max_angle);
     const std::size_t nt = m_mesh.vertex.size();
@@ -164,10 +167,16 @@ public:
         }
       }
       const int c = first_chart + made++;
-      grow_one(seed, c, cos_max, max_units, allowed, frontier);
+      start_chart(c);
+      add_unit(seed, c, -1, allowed);
+      extend(c, cos_max, max_units, allowed, &frontier);
     }
-    return made;
+    absorb_small_charts(first_chart, made, keep);
+    return renumber(first_chart, made);
   }
+
+  // Charts of fewer polygons than this are absorbed by a neighbour when they have one.
+  static constexpr std::size_t small_chart = 8;
 
 private:
   struct Candidate
@@ -219,69 +228,163 @@ private:
     return true;
   }
 
-  void grow_one(std::size_t seed, int c, double cos_max, std::size_t max_units, const std::vector<char>& allowed,
-                std::queue<std::size_t>& frontier)
+  struct Chart_state
   {
-    std::size_t units = 0;
-    Vec3 normal = {0., 0., 0.};
-    std::size_t border = 0;
     std::vector<std::size_t> members; // triangles
+    Vec3 normal = {0., 0., 0.};       // sum of the area-weighted normals
+    std::size_t border = 0;           // sides on its border
+    std::size_t units = 0;
     std::priority_queue<Candidate> heap;
+  };
 
-    auto add_unit = [&](std::size_t u, int entry) { // entry: a chart side glued to the unit, or -1
-      const std::size_t first = m_unit_first[u], last = m_unit_first[u + 1];
-      ++units;
-      for(std::size_t t = first; t < last; ++t) {
-        m_chart[t] = c;
-        members.push_back(t);
-      }
-      border += 3 * (last - first) - 2 * (last - first - 1);
-      if(entry >= 0) {
-        glue(entry);
-        border -= 2;
-      }
-      for(std::size_t t = first; t < last; ++t) // the diagonals
-        for(int k = 0; k < 3; ++k) {
-          const int s = int(3 * t + k), m = m_mate[s];
-          if(m >= 0 && s < m && m_unit[std::size_t(m / 3)] == u)
-            glue(s);
-        }
-      for(int i = 0; i < 3; ++i) normal[i] += m_normal[u][i];
-      for(std::size_t t = first; t < last; ++t)
-        for(int k = 0; k < 3; ++k) {
-          const int s = int(3 * t + k), m = m_mate[s];
-          if(m < 0 || m_glued[s])
-            continue;
-          const std::size_t tm = std::size_t(m / 3);
-          if(m_chart[tm] == c)
-            try_zip(s, c, border);
-          else if(allowed[tm] && m_chart[tm] < 0)
-            heap.push(Candidate{1. - cosine(m_normal[m_unit[tm]], normal), s});
-        }
-    };
+  void start_chart(int c)
+  {
+    if(m_state.size() <= std::size_t(c)) m_state.resize(std::size_t(c) + 1);
+    m_state[std::size_t(c)] = Chart_state();
+  }
 
-    add_unit(seed, -1);
-    while(!heap.empty()) {
-      const Candidate k = heap.top();
-      heap.pop();
+  // Puts unit u into chart c, glued to the chart's side `entry` (or alone, with -1), zips what
+  // can be zipped and queues its other sides.
+  void add_unit(std::size_t u, int c, int entry, const std::vector<char>& allowed)
+  {
+    Chart_state& st = m_state[std::size_t(c)];
+    const std::size_t first = m_unit_first[u], last = m_unit_first[u + 1];
+    ++st.units;
+    for(std::size_t t = first; t < last; ++t) {
+      m_chart[t] = c;
+      st.members.push_back(t);
+    }
+    st.border += 3 * (last - first) - 2 * (last - first - 1);
+    if(entry >= 0) {
+      glue(entry);
+      st.border -= 2;
+    }
+    for(std::size_t t = first; t < last; ++t) // the diagonals
+      for(int k = 0; k < 3; ++k) {
+        const int s = int(3 * t + k), m = m_mate[s];
+        if(m >= 0 && s < m && m_unit[std::size_t(m / 3)] == u)
+          glue(s);
+      }
+    for(int i = 0; i < 3; ++i) st.normal[i] += m_normal[u][i];
+    for(std::size_t t = first; t < last; ++t)
+      for(int k = 0; k < 3; ++k) {
+        const int s = int(3 * t + k), m = m_mate[s];
+        if(m < 0 || m_glued[s])
+          continue;
+        const std::size_t tm = std::size_t(m / 3);
+        if(m_chart[tm] == c)
+          try_zip(s, c, st.border);
+        else if(allowed[tm] && m_chart[tm] < 0)
+          st.heap.push(Candidate{1. - cosine(m_normal[m_unit[tm]], st.normal), s});
+      }
+  }
+
+  // Sides of unit u whose mates are in chart c.
+  int sides_on(std::size_t u, int c) const
+  {
+    int k = 0;
+    for(std::size_t t = m_unit_first[u]; t < m_unit_first[u + 1]; ++t)
+      for(int i = 0; i < 3; ++i) {
+        const int m = m_mate[3 * t + std::size_t(i)];
+        k += m >= 0 && m_chart[std::size_t(m / 3)] == c && m_unit[std::size_t(m / 3)] != u;
+      }
+    return k;
+  }
+
+  // Grows chart c from its queued sides. A unit that touches the chart along two sides or
+  // more fills a notch: it is taken within a wider cone, which keeps the border smooth.
+  // Units refused go to `frontier` (if given) as seeds of later charts.
+  void extend(int c, double cos_max, std::size_t max_units, const std::vector<char>& allowed,
+              std::queue<std::size_t>* frontier)
+  {
+    const double cos_notch = cos_max < -1. ? cos_max : std::cos((std::min)(1.5 * std::acos((std::max)(-1., cos_max)), 3.14159265358979323846));
+    for(;;) {
+      Chart_state& st = m_state[std::size_t(c)];
+      if(st.heap.empty()) break;
+      const Candidate k = st.heap.top();
+      st.heap.pop();
       const int m = m_mate[k.side];
       const std::size_t tm = std::size_t(m / 3);
-      if(m_chart[tm] >= 0 || m_glued[k.side])
+      if(m_chart[tm] >= 0 || m_glued[k.side] || !allowed[tm])
         continue;
       const std::size_t u = m_unit[tm];
-      if(cosine(m_normal[u], normal) < cos_max || (max_units > 0 && units >= max_units)) {
-        frontier.push(u);
+      const double cos_u = cosine(m_normal[u], st.normal);
+      const double limit = sides_on(u, c) >= 2 ? cos_notch : cos_max;
+      if(cos_u < limit || (max_units > 0 && st.units >= max_units)) {
+        if(frontier != nullptr) frontier->push(u);
         continue;
       }
-      add_unit(u, k.side);
+      add_unit(u, c, k.side, allowed);
     }
-    // zips made possible by later ones
-    for(bool again = true; again;) {
+    Chart_state& st = m_state[std::size_t(c)];
+    for(bool again = true; again;) { // zips made possible by later ones
       again = false;
-      for(std::size_t t : members)
+      for(std::size_t t : st.members)
         for(int k = 0; k < 3; ++k)
-          again = try_zip(int(3 * t + k), c, border) || again;
+          again = try_zip(int(3 * t + k), c, st.border) || again;
     }
+  }
+
+  // Every chart of fewer than `small_chart` polygons goes to the neighbour it shares the most
+  // sides with, whatever the normals (the stretch bound still applies to the result).
+  void absorb_small_charts(int first_chart, int count, int keep)
+  {
+    int live = count;
+    for(int c = first_chart; c < first_chart + count && live > keep; ++c) {
+      Chart_state& st = m_state[std::size_t(c)];
+      if(st.units == 0 || st.units >= small_chart)
+        continue;
+      std::unordered_map<int, int> shared;
+      for(std::size_t t : st.members)
+        for(int k = 0; k < 3; ++k) {
+          const int m = m_mate[3 * t + std::size_t(k)];
+          const int d = m < 0 ? -1 : m_chart[std::size_t(m / 3)];
+          if(d >= first_chart && d != c && m_state[std::size_t(d)].units > 0) ++shared[d];
+        }
+      int best = -1, most = 0;
+      for(const auto& e : shared)
+        if(e.second > most || (e.second == most && e.first < best)) { most = e.second; best = e.first; }
+      if(best < 0)
+        continue;
+      // forget chart c, then let its neighbour grow over it
+      std::vector<char> mine(m_chart.size(), 0);
+      for(std::size_t t : st.members) {
+        mine[t] = 1;
+        m_chart[t] = -1;
+        for(int k = 0; k < 3; ++k) {
+          m_glued[3 * t + std::size_t(k)] = 0;
+          m_parent[3 * t + std::size_t(k)] = int(3 * t) + k;
+        }
+      }
+      st = Chart_state();
+      Chart_state& to = m_state[std::size_t(best)];
+      for(std::size_t t : to.members)
+        for(int k = 0; k < 3; ++k) {
+          const int s = int(3 * t) + k, m = m_mate[s];
+          if(m >= 0 && !m_glued[s] && mine[std::size_t(m / 3)])
+            to.heap.push(Candidate{0., s});
+        }
+      extend(best, -2., 0, mine, nullptr);
+      --live;
+    }
+  }
+
+  // Numbers the charts that kept triangles from first_chart on; returns how many there are.
+  int renumber(int first_chart, int count)
+  {
+    std::vector<int> id(std::size_t(count), -1);
+    int n = 0;
+    for(int c = first_chart; c < first_chart + count; ++c)
+      if(m_state[std::size_t(c)].units > 0) id[std::size_t(c - first_chart)] = first_chart + n++;
+    for(int c = first_chart; c < first_chart + count; ++c)
+      for(std::size_t t : m_state[std::size_t(c)].members)
+        m_chart[t] = id[std::size_t(c - first_chart)];
+    for(int c = first_chart; c < first_chart + count; ++c) {
+      const int to = id[std::size_t(c - first_chart)];
+      if(to >= 0 && to != c) m_state[std::size_t(to)] = std::move(m_state[std::size_t(c)]);
+    }
+    m_state.resize(std::size_t(first_chart + n));
+    return n;
   }
 
   const Atlas_triangles& m_mesh;
@@ -292,6 +395,7 @@ private:
   std::vector<std::size_t> m_unit;       // per triangle: its polygon's unit
   std::vector<std::size_t> m_unit_first; // first triangle of each unit, and one past the last
   std::vector<Vec3> m_normal;            // per unit: area-weighted normal (its length: the area)
+  std::vector<Chart_state> m_state;      // per chart
 };
 
 } // namespace internal
