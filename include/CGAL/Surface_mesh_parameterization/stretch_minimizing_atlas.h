@@ -161,6 +161,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   auto t2 = std::chrono::steady_clock::now();
   std::vector<std::size_t> kept;
   std::vector<std::vector<Vec2> > uv;
+  std::vector<std::vector<Triangle> > chart_triangles;
   std::vector<double> area_uv, area_3d;
   for(std::size_t c = 0; c < charts.size(); ++c) {
     if(charts[c].triangles.empty()) continue;
@@ -175,8 +176,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     area_uv.push_back(a2);
     area_3d.push_back(a3);
     uv.push_back(charts[c].uv);
+    chart_triangles.push_back(charts[c].flat.tri);
   }
-  const Packing_result packed = pack_charts(uv, area_uv, area_3d, settings.packing);
+  const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing);
   r.utilization = packed.utilization;
   r.charts = kept.size();
   r.seconds_packing = seconds_since(t2);

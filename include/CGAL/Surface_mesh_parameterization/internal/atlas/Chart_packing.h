@@ -6,9 +6,10 @@
 
 // Packing the flattened charts into the unit square: every chart scaled to the same texel
 // density (uv area = surface area before the final scale), turned to its smallest bounding
-// rectangle (CGAL's min_rectangle_2 of its convex hull), and the rectangles placed by a
-// bottom-left skyline, with a gutter between them given in texels of a square texture.
-// Charts only ever share the square through disjoint rectangles, so no two charts overlap.
+// rectangle (CGAL's min_rectangle_2 of its convex hull), then placed by a bottom-left
+// skyline on a grid of texels (charts nest into the hollows of the ones below), with a gutter
+// between them given in texels of a square texture.
+// Charts only ever occupy disjoint cells, widened by half the gutter, so no two charts overlap.
 
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
@@ -69,67 +70,93 @@ inline Vec2 align_chart(std::vector<Vec2>& uv)
   return turn ? Vec2{ymax - ymin, xmax - xmin} : Vec2{xmax - xmin, ymax - ymin};
 }
 
-// Bottom-left skyline placement of rectangles (w, h) in a strip of width `width`: positions of
-// their lower left corners, each rectangle possibly turned by 90 degrees (`turned`). Returns
-// the height used.
-inline double skyline_pack(const std::vector<Vec2>& size, double width, std::vector<Vec2>& at,
-                           std::vector<char>& turned)
+// A chart seen from below and from above on a grid: per column of cells, the lowest and the
+// highest row its triangles may touch (their boxes, widened by `pad` cells), -1 if none.
+struct Chart_profile
 {
-  struct Segment { double x, y, w; };
-  std::vector<Segment> sky = {Segment{0., 0., width}};
-  std::vector<std::size_t> order(size.size());
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&size](std::size_t a, std::size_t b) {
-    return size[a][1] != size[b][1] ? size[a][1] > size[b][1] : a < b;
+  std::vector<long> bottom, top;
+  long width() const { return long(bottom.size()); }
+};
+
+inline Chart_profile chart_profile(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri, double scale, long pad)
+{
+  Chart_profile p;
+  long columns = 0;
+  for(const Vec2& q : uv) columns = (std::max)(columns, long(std::floor(q[0] * scale)) + 1);
+  p.bottom.assign(std::size_t(columns + 2 * pad), -1);
+  p.top.assign(p.bottom.size(), -1);
+  for(const Triangle& t : tri) {
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
+    for(int v : t) {
+      x0 = (std::min)(x0, uv[std::size_t(v)][0]); x1 = (std::max)(x1, uv[std::size_t(v)][0]);
+      y0 = (std::min)(y0, uv[std::size_t(v)][1]); y1 = (std::max)(y1, uv[std::size_t(v)][1]);
+    }
+    const long c0 = long(std::floor(x0 * scale)), c1 = long(std::floor(x1 * scale)) + 2 * pad;
+    const long r0 = long(std::floor(y0 * scale)), r1 = long(std::floor(y1 * scale)) + 2 * pad;
+    for(long c = c0; c <= c1; ++c) {
+      long& b = p.bottom[std::size_t(c)];
+      long& u = p.top[std::size_t(c)];
+      b = b < 0 ? r0 : (std::min)(b, r0);
+      u = (std::max)(u, r1);
+    }
+  }
+  return p;
+}
+
+// Places every chart, largest first, at the column where it comes to rest lowest on the
+// skyline of the charts placed before (each also tried turned by 90 degrees): charts nest
+// into each other's hollows from above. Returns the side of the square used, in cells.
+inline long skyline_place(const std::vector<Chart_profile>& straight, const std::vector<Chart_profile>& turned,
+                          const std::vector<double>& area, long width, std::vector<long>& at_x,
+                          std::vector<long>& at_y, std::vector<char>& is_turned)
+{
+  const std::size_t n = straight.size();
+  std::vector<std::size_t> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&area](std::size_t a, std::size_t b) {
+    return area[a] != area[b] ? area[a] > area[b] : a < b;
   });
-  at.assign(size.size(), Vec2{0., 0.});
-  turned.assign(size.size(), 0);
-  double height = 0.;
+  std::vector<long> sky(std::size_t(width), 0);
+  at_x.assign(n, 0); at_y.assign(n, 0); is_turned.assign(n, 0);
+  long used = 0, height = 0;
   for(std::size_t i : order) {
-    double best_top = HUGE_VAL, best_x = 0., best_y = 0.;
-    bool best_turn = false;
-    for(int turn = 0; turn < 2; ++turn) {
-      const double w = turn ? size[i][1] : size[i][0], h = turn ? size[i][0] : size[i][1];
-      if(w > width) continue;
-      for(std::size_t k = 0; k < sky.size(); ++k) {
-        const double x = sky[k].x;
-        if(x + w > width * (1. + 1e-12)) break;
-        double y = 0.; // the highest segment under [x, x + w)
-        for(std::size_t j = k; j < sky.size() && sky[j].x < x + w; ++j)
-          y = (std::max)(y, sky[j].y);
-        if(y + h < best_top || (y + h == best_top && x < best_x)) {
-          best_top = y + h; best_x = x; best_y = y; best_turn = turn != 0;
+    long best_top = -1, best_x = 0, best_y = 0;
+    bool best_turned = false;
+    for(int k = 0; k < 2; ++k) {
+      const Chart_profile& p = k ? turned[i] : straight[i];
+      for(long x = 0; x + p.width() <= width; ++x) {
+        long y = 0;
+        for(long c = 0; c < p.width(); ++c)
+          if(p.bottom[std::size_t(c)] >= 0) y = (std::max)(y, sky[std::size_t(x + c)] - p.bottom[std::size_t(c)]);
+        long top = 0;
+        for(long c = 0; c < p.width(); ++c)
+          if(p.top[std::size_t(c)] >= 0) top = (std::max)(top, y + p.top[std::size_t(c)] + 1);
+        if(best_top < 0 || top < best_top) {
+          best_top = top; best_x = x; best_y = y; best_turned = k != 0;
         }
       }
     }
-    const double w = best_turn ? size[i][1] : size[i][0];
-    at[i] = {best_x, best_y};
-    turned[i] = best_turn;
+    if(best_top < 0) return -1; // wider than the strip
+    const Chart_profile& p = best_turned ? turned[i] : straight[i];
+    for(long c = 0; c < p.width(); ++c)
+      if(p.top[std::size_t(c)] >= 0) {
+        long& s = sky[std::size_t(best_x + c)];
+        s = (std::max)(s, best_y + p.top[std::size_t(c)] + 1);
+        used = (std::max)(used, best_x + c + 1);
+      }
+    at_x[i] = best_x; at_y[i] = best_y; is_turned[i] = best_turned;
     height = (std::max)(height, best_top);
-    // the skyline above [best_x, best_x + w) is now best_top
-    std::vector<Segment> next;
-    for(const Segment& s : sky) {
-      const double a = s.x, b = s.x + s.w;
-      if(b <= best_x || a >= best_x + w) { next.push_back(s); continue; }
-      if(a < best_x) next.push_back(Segment{a, s.y, best_x - a});
-      if(b > best_x + w) next.push_back(Segment{best_x + w, s.y, b - best_x - w});
-    }
-    next.push_back(Segment{best_x, best_top, w});
-    std::sort(next.begin(), next.end(), [](const Segment& p, const Segment& q) { return p.x < q.x; });
-    sky.clear();
-    for(const Segment& s : next) // merge equal heights
-      if(!sky.empty() && sky.back().y == s.y && sky.back().x + sky.back().w == s.x)
-        sky.back().w += s.w;
-      else
-        sky.push_back(s);
   }
-  return height;
+  return (std::max)(used, height);
 }
 
-// Packs the charts (`uv[c]`, each in its own frame, `area_3d[c]` its surface area) into the
-// unit square, in place.
-inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std::vector<double>& area_uv,
-                                  const std::vector<double>& area_3d, const Packing_settings& settings)
+// Packs the charts (`uv[c]`, each in its own frame, with its triangles `tri[c]`, its uv area
+// and its surface area) into the unit square, in place: on a grid of `resolution` cells a
+// side, each chart's triangles widened by half the gutter, so that two charts are at least a
+// gutter apart and never overlap.
+inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
+                                  const std::vector<double>& area_uv, const std::vector<double>& area_3d,
+                                  const Packing_settings& settings)
 {
   Packing_result r;
   const std::size_t n = uv.size();
@@ -138,56 +165,74 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   for(double a : area_3d) total_3d += a;
   if(!(total_3d > 0.)) total_3d = 1.;
   // one texel density; a chart without surface area gets the size of a small one
-  std::vector<Vec2> size(n);
   double charts_area = 0.;
+  std::vector<double> area(n);
+  std::vector<std::vector<Vec2> > turned_uv(n);
   for(std::size_t c = 0; c < n; ++c) {
     double s = area_uv[c] > 0. && area_3d[c] > 0. ? std::sqrt(area_3d[c] / area_uv[c]) : 0.;
-    Vec2 extent = align_chart(uv[c]);
+    const Vec2 extent = align_chart(uv[c]);
     if(!(s > 0.) || !std::isfinite(s)) {
       const double e = (std::max)(extent[0], extent[1]);
       s = e > 0. ? 1e-4 * std::sqrt(total_3d) / e : 1.;
     }
     for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
-    size[c] = {s * extent[0], s * extent[1]};
-    charts_area += s * s * area_uv[c];
+    turned_uv[c].reserve(uv[c].size());
+    for(const Vec2& q : uv[c]) turned_uv[c].push_back({s * extent[1] - q[1], q[0]}); // +90 degrees
+    area[c] = s * s * area_uv[c];
+    charts_area += area[c];
   }
 
-  // The gutter depends on the side of the square, which depends on the gutter: pack again
-  // until the square the packing needs is the one its gutter was computed for.
-  const double texel = 1. / double((std::max)(settings.resolution, 1u));
-  double side = std::sqrt(total_3d / 0.6), gutter = 0., extent = 0.;
-  std::vector<Vec2> at, best_at, padded(n);
+  // cells per surface unit: the square of `resolution` cells should hold the charts; shrink
+  // until it does, then grow while it still does
+  const long cells = long((std::max)(settings.resolution, 16u));
+  const long pad = long(std::ceil(0.5 * settings.gutter));
+  double scale = double(cells) * std::sqrt(0.5 / total_3d), best_scale = 0.;
+  std::vector<long> x, y, best_x, best_y;
   std::vector<char> turned, best_turned;
-  for(int round = 0; round < 20; ++round) {
-    gutter = settings.gutter * texel * side;
-    double widest = 0., area = 0.;
+  long best_side = 0;
+  for(int round = 0; round < 12; ++round) {
+    std::vector<Chart_profile> straight(n), rotated(n);
+    bool fits = true;
+    for(std::size_t c = 0; c < n && fits; ++c) {
+      straight[c] = chart_profile(uv[c], tri[c], scale, pad);
+      rotated[c] = chart_profile(turned_uv[c], tri[c], scale, pad);
+      fits = (std::min)(straight[c].width(), rotated[c].width()) <= cells;
+    }
+    const long side = fits ? skyline_place(straight, rotated, area, cells, x, y, turned) : -1;
+    if(side > 0 && side <= cells) {
+      if(scale > best_scale) {
+        best_scale = scale; best_side = side; best_x = x; best_y = y; best_turned = turned;
+      }
+      if(side > 0.97 * double(cells)) break;
+      scale *= (std::min)(1.5, 0.99 * double(cells) / double(side));
+    } else {
+      scale *= side > 0 ? (std::max)(0.5, 0.98 * double(cells) / double(side)) : 0.7;
+    }
+  }
+  if(best_scale == 0.) { // could not fit at any tried scale: one chart per row of the square
+    best_scale = scale;
+    best_x.assign(n, 0); best_y.assign(n, 0); best_turned.assign(n, 0);
+    long row = 0;
     for(std::size_t c = 0; c < n; ++c) {
-      padded[c] = {size[c][0] + gutter, size[c][1] + gutter};
-      widest = (std::max)(widest, (std::min)(padded[c][0], padded[c][1]));
-      area += padded[c][0] * padded[c][1];
+      best_y[c] = row;
+      const Chart_profile p = chart_profile(uv[c], tri[c], scale, pad);
+      long top = 0;
+      for(long t : p.top) top = (std::max)(top, t + 1);
+      row += top;
     }
-    extent = HUGE_VAL;
-    for(double f = 1.0; f <= 1.6; f += 0.05) { // strip widths around the square of the area
-      const double width = (std::max)(widest, f * std::sqrt(area));
-      const double height = skyline_pack(padded, width, at, turned);
-      const double s = (std::max)(width, height);
-      if(s < extent) { extent = s; best_at = at; best_turned = turned; }
-    }
-    if(extent <= side && extent >= side * (1. - 1e-3)) break;
-    side = extent;
+    best_side = (std::max)(row, cells);
   }
-  // charts sit half a gutter inside their padded rectangles: a gutter apart, and half a
-  // gutter inside the square
-  side = (std::max)(side, extent);
+  const double side = double((std::max)(best_side, 1L));
   for(std::size_t c = 0; c < n; ++c) {
-    const double x0 = best_at[c][0] + 0.5 * gutter, y0 = best_at[c][1] + 0.5 * gutter;
-    for(Vec2& q : uv[c]) {
-      const Vec2 p = best_turned[c] ? Vec2{size[c][1] - q[1], q[0]} : q;
-      q = {(std::min)((x0 + p[0]) / side, 1.), (std::min)((y0 + p[1]) / side, 1.)};
-    }
+    const std::vector<Vec2>& from = best_turned[c] ? turned_uv[c] : uv[c];
+    std::vector<Vec2> placed(from.size());
+    for(std::size_t v = 0; v < from.size(); ++v)
+      placed[v] = {(std::min)((double(best_x[c] + pad) + from[v][0] * best_scale) / side, 1.),
+                   (std::min)((double(best_y[c] + pad) + from[v][1] * best_scale) / side, 1.)};
+    uv[c].swap(placed);
   }
-  r.side = side;
-  r.utilization = charts_area / (side * side);
+  r.side = side / best_scale;
+  r.utilization = charts_area * best_scale * best_scale / (side * side);
   return r;
 }
 
