@@ -10,37 +10,10 @@
 
 namespace {
 
-// Writes `text` to `file` through a temporary name, so that a failure never leaves a file that
-// looks complete.
-void write_atomically(const fs::path& file, const std::string& text)
-{
-  const fs::path temporary = file.string() + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.flush();
-    if(!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      die("cannot write " + file.string());
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, file, ec);
-  if(ec)
-    die("cannot write " + file.string() + ": " + ec.message());
-}
-
 int run_atlas(const Options& o)
 {
   const auto start = std::chrono::steady_clock::now();
-  const std::string ext = fs::path(o.input).extension().string();
-  std::string lower = ext;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(lower != ".off" && lower != ".obj" && lower != ".ply" && lower != ".stl")
-    die("unknown file format '" + ext + "' of " + o.input + " (read: .off, .obj, .ply, .stl)");
-  if(!std::ifstream(o.input))
-    die("cannot open " + o.input);
+  check_input_file(o);
   std::vector<Point_3> points;
   std::vector<std::vector<std::size_t> > polygons;
   if(!CGAL::IO::read_polygon_soup(o.input, points, polygons, CGAL::parameters::verbose(false)) || polygons.empty())
@@ -87,12 +60,8 @@ int run_atlas(const Options& o)
       obj << "\n";
     }
     write_atomically(dir / (name + ".obj"), obj.str());
-    write_atomically(dir / (name + ".mtl"), "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd checker.png\n");
     outputs.push_back(name + ".obj");
-    outputs.push_back(name + ".mtl");
-    if(!smp_tools::write_checkerboard_png((dir / "checker.png").string(), 512, 16))
-      die("cannot write " + (dir / "checker.png").string());
-    outputs.push_back("checker.png");
+    write_material(dir, name, outputs);
   }
   const double write_seconds = seconds_since(t2);
 
@@ -118,19 +87,7 @@ int run_atlas(const Options& o)
       }
     const double normalization = a3 > 0. ? std::sqrt(a2 / a3) : 1.;
     for(double& s : picture.face_stretch) s *= normalization;
-    const std::string layout = name + "_uv_stretch.png";
-    if(!smp_tools::write_uv_layout_png((dir / layout).string(), picture, o.size))
-      die("cannot write " + layout);
-    outputs.push_back(layout);
-    const struct { const char* view; double yaw, pitch; } views[] = {{"front", 0, 10}, {"side", 90, 10}, {"three_quarter", -40, 20}};
-    for(const auto& view : views) {
-      const std::string file = name + "_checker_" + view.view + ".png";
-      const std::string error = smp_tools::render_surface_png((dir / file).string(), picture, o.size, o.size,
-                                                              o.up, view.yaw, view.pitch, true, 64);
-      if(!error.empty())
-        die("rendering " + file + ": " + error);
-      outputs.push_back(file);
-    }
+    write_pictures(dir, name, picture, o, 64, outputs);
   }
   const double render_seconds = seconds_since(t3);
 

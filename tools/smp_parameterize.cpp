@@ -340,6 +340,70 @@ Mesh cut_open(Mesh& closed)
   return disk;
 }
 
+// Stops unless `o.input` names a readable file of a format the tool reads.
+void check_input_file(const Options& o)
+{
+  const std::string ext = fs::path(o.input).extension().string();
+  std::string lower = ext;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  if(lower != ".off" && lower != ".obj" && lower != ".ply" && lower != ".stl")
+    die("unknown file format '" + ext + "' of " + o.input + " (read: .off, .obj, .ply, .stl)");
+  if(!std::ifstream(o.input))
+    die("cannot open " + o.input);
+}
+
+// Writes `text` to `file` through a temporary name, so that a failure never leaves a file that
+// looks complete.
+void write_atomically(const fs::path& file, const std::string& text)
+{
+  const fs::path temporary = file.string() + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    out.flush();
+    if(!out) {
+      std::error_code ignored;
+      fs::remove(temporary, ignored);
+      die("cannot write " + file.string());
+    }
+  }
+  std::error_code ec;
+  fs::rename(temporary, file, ec);
+  if(ec)
+    die("cannot write " + file.string() + ": " + ec.message());
+}
+
+// The MTL of NAME.obj and its checkerboard texture.
+void write_material(const fs::path& dir, const std::string& name, std::vector<std::string>& outputs)
+{
+  write_atomically(dir / (name + ".mtl"), "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd checker.png\n");
+  outputs.push_back(name + ".mtl");
+  if(!smp_tools::write_checkerboard_png((dir / "checker.png").string(), 512, 16))
+    die("cannot write " + (dir / "checker.png").string());
+  outputs.push_back("checker.png");
+}
+
+// The uv layout by stretch, and the surface with the checkerboard (`checks` squares a side)
+// and with the stretch colours, from three views.
+void write_pictures(const fs::path& dir, const std::string& name, const smp_tools::Textured_mesh& picture,
+                    const Options& o, int checks, std::vector<std::string>& outputs)
+{
+  const std::string layout = name + "_uv_stretch.png";
+  if(!smp_tools::write_uv_layout_png((dir / layout).string(), picture, o.size))
+    die("cannot write " + layout);
+  outputs.push_back(layout);
+  const struct { const char* view; double yaw, pitch; } views[] = {{"front", 0, 10}, {"side", 90, 10}, {"three_quarter", -40, 20}};
+  for(const auto& view : views)
+    for(bool checker : {true, false}) {
+      const std::string file = name + (checker ? "_checker_" : "_stretch_") + view.view + ".png";
+      const std::string error = smp_tools::render_surface_png((dir / file).string(), picture, o.size, o.size,
+                                                              o.up, view.yaw, view.pitch, checker, checks);
+      if(!error.empty())
+        die("rendering " + file + ": " + error);
+      outputs.push_back(file);
+    }
+}
+
 } // namespace
 
 #include "smp_atlas_command.h"
@@ -353,13 +417,7 @@ int main(int argc, char** argv)
     return run_atlas(o);
 
   // ---- read and check
-  const std::string ext = fs::path(o.input).extension().string();
-  std::string lower = ext;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if(lower != ".off" && lower != ".obj" && lower != ".ply" && lower != ".stl")
-    die("unknown file format '" + ext + "' of " + o.input + " (read: .off, .obj, .ply, .stl)");
-  if(!std::ifstream(o.input))
-    die("cannot open " + o.input);
+  check_input_file(o);
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(o.input, mesh, CGAL::parameters::verbose(false)) || faces(mesh).empty())
     die("cannot read a polygon mesh from " + o.input + " (a soup with non-manifold edges, or an inconsistent orientation: add --atlas)");
@@ -485,9 +543,7 @@ int main(int argc, char** argv)
   const fs::path dir(o.output);
   std::vector<std::string> outputs;
   {
-    std::ofstream mtl(dir / (name + ".mtl"));
-    mtl << "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd checker.png\n";
-    std::ofstream obj(dir / (name + ".obj"));
+    std::ostringstream obj;
     obj << "# " << name << " parameterized by smp-parameterize (" << o.method << ")\nmtllib " << name << ".mtl\n";
     obj.precision(17);
     for(vertex_descriptor v : vertices(mesh))
@@ -501,37 +557,19 @@ int main(int argc, char** argv)
         obj << " " << v.idx() + 1 << "/" << v.idx() + 1;
       obj << "\n";
     }
-    if(!obj || !mtl)
-      die("cannot write the OBJ or MTL file in " + o.output);
+    write_atomically(dir / (name + ".obj"), obj.str());
     outputs.push_back(name + ".obj");
-    outputs.push_back(name + ".mtl");
-    if(!smp_tools::write_checkerboard_png((dir / "checker.png").string(), 512, 16))
-      die("cannot write " + (dir / "checker.png").string());
-    outputs.push_back("checker.png");
+    write_material(dir, name, outputs);
   }
   const double write_seconds = seconds_since(t2);
 
   const auto t3 = std::chrono::steady_clock::now();
-  if(o.pictures) {
-    const std::string layout = name + "_uv_stretch.png";
-    if(!smp_tools::write_uv_layout_png((dir / layout).string(), picture, o.size))
-      die("cannot write " + layout);
-    outputs.push_back(layout);
-    const struct { const char* view; double yaw, pitch; } views[] = {{"front", 0, 10}, {"side", 90, 10}, {"three_quarter", -40, 20}};
-    for(const auto& view : views)
-      for(bool checker : {true, false}) {
-        const std::string file = name + (checker ? "_checker_" : "_stretch_") + view.view + ".png";
-        const std::string error = smp_tools::render_surface_png((dir / file).string(), picture, o.size, o.size,
-                                                                o.up, view.yaw, view.pitch, checker, 16);
-        if(!error.empty())
-          die("rendering " + file + ": " + error);
-        outputs.push_back(file);
-      }
-  }
+  if(o.pictures)
+    write_pictures(dir, name, picture, o, 16, outputs);
   const double render_seconds = seconds_since(t3);
 
   // ---- report
-  std::ofstream json(dir / "report.json");
+  std::ostringstream json;
   json << "{\n  \"input\": " << json_string(o.input) << ",\n"
        << "  \"mesh\": {\"vertices\": " << input_vertices << ", \"faces\": " << input_faces
        << ", \"boundaries\": " << loops.size() << ", \"components\": " << components
@@ -570,8 +608,7 @@ int main(int argc, char** argv)
   for(std::size_t i = 0; i < outputs.size(); ++i)
     json << (i ? ", " : "") << json_string(outputs[i]);
   json << "]\n}\n";
-  if(!json)
-    die("cannot write report.json in " + o.output);
+  write_atomically(dir / "report.json", json.str());
 
   if(!o.quiet)
     std::cout << o.method << ": L2 stretch " << std::setprecision(6) << stats.l2_stretch << ", Linf " << stats.linf_stretch

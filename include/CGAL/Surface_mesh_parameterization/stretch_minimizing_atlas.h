@@ -107,14 +107,17 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // from its own triangles, with a narrower normal cone and fewer polygons
   std::vector<Chart_map> charts(static_cast<std::size_t>(n));
   std::vector<std::vector<std::size_t> > members;
-  auto collect = [&](int first, int count) {
+  // the triangles of the charts numbered from `first` on, all among `triangles`
+  auto collect = [&](int first, int count, const std::vector<std::size_t>& triangles) {
     members.resize(std::size_t(first + count));
     for(int c = first; c < first + count; ++c) members[std::size_t(c)].clear();
-    for(std::size_t t = 0; t < nt; ++t)
+    for(std::size_t t : triangles)
       if(g.chart(t) >= first)
         members[std::size_t(g.chart(t))].push_back(t);
   };
-  collect(0, n);
+  std::vector<std::size_t> every(nt);
+  for(std::size_t t = 0; t < nt; ++t) every[t] = t;
+  collect(0, n, every);
   for(std::size_t c = 0; c < charts.size(); ++c) {
     if(charts[c].triangles.empty())
       charts[c].triangles = members[c];
@@ -150,7 +153,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     const std::size_t cap = (units + 1) / 2;
     const int first = int(charts.size());
     const int made = g.grow(allowed, first, a, cap, 2);
-    collect(first, made);
+    collect(first, made, triangles);
     charts.resize(std::size_t(first + made));
     angle.resize(std::size_t(first + made), a);
     charts[c] = Chart_map(); // emptied: its triangles are in the new charts
@@ -223,8 +226,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   }
 
   // seams: edges of two or more sides that are not one glued pair
-  struct Hash { std::size_t operator()(const std::pair<int, int>& e) const { return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^ e.second); } };
-  std::unordered_map<std::pair<int, int>, std::pair<int, int>, Hash> edges; // sides, glued sides
+  std::unordered_map<std::pair<int, int>, std::pair<int, int>, Edge_hash> edges; // sides, glued sides
   for(std::size_t t = 0; t < nt; ++t)
     for(int k = 0; k < 3; ++k) {
       const int a = m.vertex[t][std::size_t(k)], b = m.vertex[t][std::size_t((k + 1) % 3)];

@@ -20,6 +20,8 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <utility>
+#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -39,6 +41,15 @@ struct Atlas_triangles
   std::vector<std::size_t> flat_polygons;
   std::vector<int> weld;                         // per input vertex: the first input vertex at its position
   std::size_t welded_vertices = 0;               // input vertices merged into an earlier one
+};
+
+// Hash of an edge given as its two vertex indices, smaller first.
+struct Edge_hash
+{
+  std::size_t operator()(const std::pair<int, int>& e) const
+  {
+    return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^ static_cast<long long>(e.second));
+  }
 };
 
 // Splits one polygon (its corners already welded, consecutive repeats removed) into triangles

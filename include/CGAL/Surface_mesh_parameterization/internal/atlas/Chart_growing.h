@@ -70,8 +70,7 @@ public:
             }
 
     // the other sides: mates when an edge has exactly two sides, in opposite directions
-    struct Hash { std::size_t operator()(const std::pair<int, int>& e) const { return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^ e.second); } };
-    std::unordered_map<std::pair<int, int>, std::array<int, 3>, Hash> sides;
+    std::unordered_map<std::pair<int, int>, std::array<int, 3>, Edge_hash> sides;
     sides.reserve(3 * nt);
     for(int s = 0; s < int(3 * nt); ++s) {
       if(m_mate[s] >= 0)
