@@ -86,6 +86,42 @@ inline double seconds_since(std::chrono::steady_clock::time_point t)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
+struct Chart_areas
+{
+  double uv = 0., surface = 0.;
+};
+
+inline Chart_areas chart_areas(const Chart_map& chart)
+{
+  Chart_areas a;
+  for(const Triangle& t : chart.flat.tri) {
+    const Triangle_stretch s = triangle_stretch(chart.flat.xyz[t[0]], chart.flat.xyz[t[1]], chart.flat.xyz[t[2]],
+                                                chart.uv[t[0]], chart.uv[t[1]], chart.uv[t[2]]);
+    a.uv += std::abs(s.area_uv);
+    a.surface += s.area_3d;
+  }
+  return a;
+}
+
+// The value of `along` (one per triangle of `chart`) that halves the chart's surface area.
+inline double area_median(const std::vector<double>& along, const Flat_triangles& chart)
+{
+  std::vector<std::pair<double, double> > v(along.size()); // (position, area)
+  double total = 0.;
+  for(std::size_t i = 0; i < along.size(); ++i) {
+    const Triangle& t = chart.tri[i];
+    v[i] = {along[i], triangle_area(chart.xyz[t[0]], chart.xyz[t[1]], chart.xyz[t[2]])};
+    total += v[i].second;
+  }
+  std::sort(v.begin(), v.end());
+  double sum = 0.;
+  for(const auto& e : v) {
+    sum += e.second;
+    if(sum >= 0.5 * total) return e.first;
+  }
+  return v.empty() ? 0. : v.back().first;
+}
+
 // The stages after the input: charts, their maps, the packing, the uv of the corners of the
 // triangles (`corner_written`: per polygon corner, whether it got one; `vertex_uv`: a uv of
 // every welded vertex in a chart).
@@ -101,6 +137,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   const double first_angle = 70. * 3.14159265358979323846 / 180.;
   int n = g.grow(allowed, 0, first_angle, 0);
   std::vector<double> angle(std::size_t(n), first_angle);
+  double atlas_area = 0.;
+  for(const auto& v : m.vertex)
+    atlas_area += triangle_area(m.xyz[std::size_t(v[0])], m.xyz[std::size_t(v[1])], m.xyz[std::size_t(v[2])]);
   r.seconds_cutting += seconds_since(t0);
 
   // flatten every chart; a chart above the bound (or that cannot be flattened) is grown again
@@ -115,76 +154,136 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       if(g.chart(t) >= first)
         members[std::size_t(g.chart(t))].push_back(t);
   };
+  auto units_of = [&m](const std::vector<std::size_t>& triangles) {
+    std::size_t units = triangles.empty() ? 0 : 1;
+    for(std::size_t i = 1; i < triangles.size(); ++i)
+      units += m.polygon[triangles[i]] != m.polygon[triangles[i - 1]];
+    return units;
+  };
   std::vector<std::size_t> every(nt);
   for(std::size_t t = 0; t < nt; ++t) every[t] = t;
   collect(0, n, every);
-  for(std::size_t c = 0; c < charts.size(); ++c) {
-    if(charts[c].triangles.empty())
-      charts[c].triangles = members[c];
-    auto t1 = std::chrono::steady_clock::now();
-    parameterize_chart(m, g, charts[c], settings.chart);
-    r.seconds_parameterization += seconds_since(t1);
-    if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
-      continue;
+  // cuts flattened chart c across the middle of its long side (a short seam), each half grown
+  // again alone; false if it cannot be cut
+  auto cut_across = [&](std::size_t c, const std::vector<double>& along) {
     const std::vector<std::size_t> triangles = charts[c].triangles;
-    const bool ok = charts[c].ok;
-    std::size_t units = 1;
-    for(std::size_t i = 1; i < triangles.size(); ++i)
-      units += m.polygon[triangles[i]] != m.polygon[triangles[i - 1]];
-    if(units < 2) {
-      if(!ok) { // one polygon that could not be flattened: its triangles laid out alone
-        for(std::size_t i = 0; i < triangles.size(); ++i) {
-          Chart_map single;
-          single.triangles = {triangles[i]};
-          make_chart_vertices(m, g, single);
-          layout_single_triangle(single);
-          single.ok = true;
-          single.l2 = 1.;
-          if(i == 0) charts[c] = single;
-          else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
-        }
-      }
-      continue;
+    const double middle = area_median(along, charts[c].flat);
+    std::unordered_map<std::size_t, std::size_t> polygon_first; // a polygon's triangles stay together
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      polygon_first.emplace(m.polygon[triangles[i]], i);
+    std::array<std::vector<char>, 2> half{std::vector<char>(nt, 0), std::vector<char>(nt, 0)};
+    std::size_t in_first = 0;
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      const bool first_half = along[polygon_first[m.polygon[triangles[i]]]] < middle;
+      half[first_half ? 0 : 1][triangles[i]] = 1;
+      in_first += first_half;
     }
-    t1 = std::chrono::steady_clock::now();
-    allowed.assign(nt, 0);
-    for(std::size_t t : triangles) allowed[t] = 1;
-    const double a = angle[c] * 0.6;
-    const std::size_t cap = (units + 1) / 2;
+    if(in_first == 0 || in_first == triangles.size())
+      return false;
     const int first = int(charts.size());
-    const int made = g.grow(allowed, first, a, cap, 2);
+    const int made_first = g.grow(half[0], first, angle[c], 0);
+    const int made = made_first + g.grow(half[1], first + made_first, angle[c], 0);
     collect(first, made, triangles);
     charts.resize(std::size_t(first + made));
-    angle.resize(std::size_t(first + made), a);
-    charts[c] = Chart_map(); // emptied: its triangles are in the new charts
-    r.seconds_cutting += seconds_since(t1);
-  }
+    angle.resize(std::size_t(first + made), angle[c]);
+    charts[c] = Chart_map();
+    return true;
+  };
+  auto settle = [&](std::size_t begin) { // the charts from `begin` on, and the ones they are cut into
+    for(std::size_t c = begin; c < charts.size(); ++c) {
+      if(charts[c].triangles.empty())
+        charts[c].triangles = members[c];
+      auto t1 = std::chrono::steady_clock::now();
+      parameterize_chart(m, g, charts[c], settings.chart);
+      r.seconds_parameterization += seconds_since(t1);
+      if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
+        continue;
+      const std::vector<std::size_t> triangles = charts[c].triangles;
+      const std::size_t units = units_of(triangles);
+      if(units < 2) {
+        if(!charts[c].ok) { // one polygon that could not be flattened: its triangles laid out alone
+          for(std::size_t i = 0; i < triangles.size(); ++i) {
+            Chart_map single;
+            single.triangles = {triangles[i]};
+            make_chart_vertices(m, g, single);
+            layout_single_triangle(single);
+            single.ok = true;
+            single.l2 = 1.;
+            if(i == 0) charts[c] = single;
+            else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
+          }
+        }
+        continue;
+      }
+      t1 = std::chrono::steady_clock::now();
+      if(charts[c].ok) { // flattened, above the bound: cut in two across its length
+        const Chart_areas a = chart_areas(charts[c]);
+        std::vector<double> along;
+        chart_length(charts[c].uv, charts[c].flat.tri, a.uv, a.surface, along);
+        if(cut_across(c, along)) {
+          r.seconds_cutting += seconds_since(t1);
+          continue;
+        }
+      }
+      allowed.assign(nt, 0);
+      for(std::size_t t : triangles) allowed[t] = 1;
+      const double a = angle[c] * 0.6;
+      const int first = int(charts.size());
+      const int made = g.grow(allowed, first, a, (units + 1) / 2, 2);
+      collect(first, made, triangles);
+      charts.resize(std::size_t(first + made));
+      angle.resize(std::size_t(first + made), a);
+      charts[c] = Chart_map(); // emptied: its triangles are in the new charts
+      r.seconds_cutting += seconds_since(t1);
+    }
+  };
+  settle(0);
 
-  // pack the charts that hold triangles
+  // pack the charts that hold triangles; while the square is poorly filled, the longest charts
+  // (the ones that leave the most room unused around them) are cut across and all packed again
   auto t2 = std::chrono::steady_clock::now();
+  const double other_stages = r.seconds_cutting + r.seconds_parameterization;
   std::vector<std::size_t> kept;
   std::vector<std::vector<Vec2> > uv;
-  std::vector<std::vector<Triangle> > chart_triangles;
-  std::vector<double> area_uv, area_3d;
-  for(std::size_t c = 0; c < charts.size(); ++c) {
-    if(charts[c].triangles.empty()) continue;
-    kept.push_back(c);
-    double a2 = 0., a3 = 0.;
-    for(const Triangle& t : charts[c].flat.tri) {
-      const Triangle_stretch s = triangle_stretch(charts[c].flat.xyz[t[0]], charts[c].flat.xyz[t[1]], charts[c].flat.xyz[t[2]],
-                                                  charts[c].uv[t[0]], charts[c].uv[t[1]], charts[c].uv[t[2]]);
-      a2 += std::abs(s.area_uv);
-      a3 += s.area_3d;
+  Packing_result packed;
+  for(int round = 0;; ++round) {
+    kept.clear();
+    uv.clear();
+    std::vector<std::vector<Triangle> > chart_triangles;
+    std::vector<double> area_uv, area_3d;
+    for(std::size_t c = 0; c < charts.size(); ++c) {
+      if(charts[c].triangles.empty()) continue;
+      kept.push_back(c);
+      const Chart_areas a = chart_areas(charts[c]);
+      area_uv.push_back(a.uv);
+      area_3d.push_back(a.surface);
+      uv.push_back(charts[c].uv);
+      chart_triangles.push_back(charts[c].flat.tri);
     }
-    area_uv.push_back(a2);
-    area_3d.push_back(a3);
-    uv.push_back(charts[c].uv);
-    chart_triangles.push_back(charts[c].flat.tri);
+    packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, packed.scale);
+    if(packed.utilization >= settings.packing.goal || round == settings.packing.max_cut_rounds)
+      break;
+    // the longest charts, within 10% of the longest
+    std::vector<std::pair<double, std::size_t> > length;
+    std::vector<std::vector<double> > along(kept.size());
+    for(std::size_t i = 0; i < kept.size(); ++i)
+      if(units_of(charts[kept[i]].triangles) >= 2)
+        length.emplace_back(chart_length(charts[kept[i]].uv, chart_triangles[i], area_uv[i], area_3d[i], along[i]), i);
+    std::sort(length.begin(), length.end(), std::greater<std::pair<double, std::size_t> >());
+    const auto t3 = std::chrono::steady_clock::now();
+    const std::size_t begin = charts.size();
+    for(const auto& e : length) {
+      if(e.first < 0.9 * length.front().first) break;
+      cut_across(kept[e.second], along[e.second]);
+    }
+    r.seconds_cutting += seconds_since(t3);
+    if(charts.size() == begin)
+      break;
+    settle(begin);
   }
-  const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing);
   r.utilization = packed.utilization;
   r.charts = kept.size();
-  r.seconds_packing = seconds_since(t2);
+  r.seconds_packing = seconds_since(t2) - (r.seconds_cutting + r.seconds_parameterization - other_stages);
 
   // per polygon corner, in the input's order
   atlas.chart.assign(number_of_polygons, 0);
@@ -225,10 +324,15 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       ++r.flipped_faces;
   }
 
-  // seams: edges of two or more sides that are not one glued pair
+  // seams: edges of two or more sides that are not one glued pair, among the sides of the
+  // input's polygons (the diagonals that split them are no edges of the input)
   std::unordered_map<std::pair<int, int>, std::pair<int, int>, Edge_hash> edges; // sides, glued sides
   for(std::size_t t = 0; t < nt; ++t)
     for(int k = 0; k < 3; ++k) {
+      const std::size_t size = atlas.uv[m.polygon[t]].size();
+      const std::size_t ca = std::size_t(m.corner[t][std::size_t(k)]), cb = std::size_t(m.corner[t][std::size_t((k + 1) % 3)]);
+      if(cb != (ca + 1) % size && ca != (cb + 1) % size)
+        continue;
       const int a = m.vertex[t][std::size_t(k)], b = m.vertex[t][std::size_t((k + 1) % 3)];
       auto& e = edges[std::make_pair((std::min)(a, b), (std::max)(a, b))];
       ++e.first;

@@ -460,7 +460,7 @@ private:
 
     double area_3d = 0.;
     for(const Triangle& t : m.tri)
-      area_3d += 0.5 * norm3(cross3(sub3(m.xyz[t[1]], m.xyz[t[0]]), sub3(m.xyz[t[2]], m.xyz[t[0]])));
+      area_3d += triangle_area(m.xyz[t[0]], m.xyz[t[1]], m.xyz[t[2]]);
     const double tol3 = Flat_stretch::degenerate_ratio * area_3d / double((std::max)(m.tri.size(), std::size_t(1)));
 
     m_energy.clear();

@@ -34,13 +34,18 @@ struct Triangle_stretch
   double area_uv = 0.; // signed
 };
 
+inline double triangle_area(const Vec3& p1, const Vec3& p2, const Vec3& p3)
+{
+  return 0.5 * norm3(cross3(sub3(p2, p1), sub3(p3, p1)));
+}
+
 inline Triangle_stretch triangle_stretch(const Vec3& p1, const Vec3& p2, const Vec3& p3,
                                          const Vec2& q1, const Vec2& q2, const Vec2& q3)
 {
   Triangle_stretch r;
   const double s1 = q1[0], t1 = q1[1], s2 = q2[0], t2 = q2[1], s3 = q3[0], t3 = q3[1];
   r.area_uv = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1));
-  r.area_3d = 0.5 * norm3(cross3(sub3(p2, p1), sub3(p3, p1)));
+  r.area_3d = triangle_area(p1, p2, p3);
   if(r.area_uv == 0.) {
     r.l2 = r.linf = HUGE_VAL;
     return r;

@@ -6,10 +6,11 @@
 
 // Packing the flattened charts into the unit square: every chart scaled to the same texel
 // density (uv area = surface area before the final scale), turned to its smallest bounding
-// rectangle (CGAL's min_rectangle_2 of its convex hull), then placed by a bottom-left
-// skyline on a grid of texels (charts nest into the hollows of the ones below), with a gutter
-// between them given in texels of a square texture.
-// Charts only ever occupy disjoint cells, widened by half the gutter, so no two charts overlap.
+// rectangle (CGAL's min_rectangle_2 of its convex hull), then rasterized on a grid of texels
+// and placed, largest first and in four quarter turns, where it rests lowest among the
+// charts before it (into their hollows too, not only on top of them), with a gutter between
+// charts given in texels of a square texture.
+// Charts only ever occupy disjoint cells, each widened by half the gutter, so no two overlap.
 
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
@@ -18,9 +19,12 @@
 #include <CGAL/min_quadrilateral_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <iterator>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -31,12 +35,15 @@ struct Packing_settings
 {
   unsigned int resolution = 1024; // texels along a side of the square texture
   double gutter = 2.;             // texels left between two charts and along the square's sides
+  double goal = 0.6;              // utilization below which the longest charts are cut across
+  int max_cut_rounds = 6;         // times they may be
 };
 
 struct Packing_result
 {
   double utilization = 0.;        // area of the charts / area of the square
   double side = 0.;               // side of the square in the charts' surface units
+  double scale = 0.;              // texels per surface unit
 };
 
 // Turns `uv` in place so that its smallest bounding rectangle is axis-aligned, wider than high,
@@ -70,93 +77,255 @@ inline Vec2 align_chart(std::vector<Vec2>& uv)
   return turn ? Vec2{ymax - ymin, xmax - xmin} : Vec2{xmax - xmin, ymax - ymin};
 }
 
-// A chart seen from below and from above on a grid: per column of cells, the lowest and the
-// highest row its triangles may touch (their boxes, widened by `pad` cells), -1 if none.
-struct Chart_profile
+// The length of a flattened chart (of uv area `area_uv` and surface area `area_3d`) along
+// the long side of its smallest bounding rectangle, in surface units; `along` receives the
+// position of each triangle's centroid along that side.
+inline double chart_length(const std::vector<Vec2>& chart_uv, const std::vector<Triangle>& tri, double area_uv,
+                           double area_3d, std::vector<double>& along)
 {
-  std::vector<long> bottom, top;
-  long width() const { return long(bottom.size()); }
-};
-
-inline Chart_profile chart_profile(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri, double scale, long pad)
-{
-  Chart_profile p;
-  long columns = 0;
-  for(const Vec2& q : uv) columns = (std::max)(columns, long(std::floor(q[0] * scale)) + 1);
-  p.bottom.assign(std::size_t(columns + 2 * pad), -1);
-  p.top.assign(p.bottom.size(), -1);
-  for(const Triangle& t : tri) {
-    double x0 = HUGE_VAL, x1 = -HUGE_VAL, y0 = HUGE_VAL, y1 = -HUGE_VAL;
-    for(int v : t) {
-      x0 = (std::min)(x0, uv[std::size_t(v)][0]); x1 = (std::max)(x1, uv[std::size_t(v)][0]);
-      y0 = (std::min)(y0, uv[std::size_t(v)][1]); y1 = (std::max)(y1, uv[std::size_t(v)][1]);
-    }
-    const long c0 = long(std::floor(x0 * scale)), c1 = long(std::floor(x1 * scale)) + 2 * pad;
-    const long r0 = long(std::floor(y0 * scale)), r1 = long(std::floor(y1 * scale)) + 2 * pad;
-    for(long c = c0; c <= c1; ++c) {
-      long& b = p.bottom[std::size_t(c)];
-      long& u = p.top[std::size_t(c)];
-      b = b < 0 ? r0 : (std::min)(b, r0);
-      u = (std::max)(u, r1);
-    }
-  }
-  return p;
+  std::vector<Vec2> uv = chart_uv;
+  const Vec2 extent = align_chart(uv);
+  along.resize(tri.size());
+  for(std::size_t i = 0; i < tri.size(); ++i)
+    along[i] = (uv[std::size_t(tri[i][0])][0] + uv[std::size_t(tri[i][1])][0] + uv[std::size_t(tri[i][2])][0]) / 3.;
+  return area_uv > 0. && area_3d > 0. ? extent[0] * std::sqrt(area_3d / area_uv) : 0.;
 }
 
-// Places every chart, largest first, at the column where it comes to rest lowest on the
-// skyline of the charts placed before (each also tried turned by 90 degrees): charts nest
-// into each other's hollows from above. Returns the side of the square used, in cells.
-inline long skyline_place(const std::vector<Chart_profile>& straight, const std::vector<Chart_profile>& turned,
-                          const std::vector<double>& area, long width, std::vector<long>& at_x,
-                          std::vector<long>& at_y, std::vector<char>& is_turned)
+// The cells a chart may touch, per row: sorted disjoint spans [first, second) of columns.
+// Every triangle covers the cells its rows cut out of it, widened by `pad` cells all round and
+// shifted by `pad`, so that the chart's uv at `scale` sits at (pad, pad) + uv * scale.
+struct Chart_mask
 {
-  const std::size_t n = straight.size();
+  typedef std::pair<long, long> Span;
+  std::vector<std::vector<Span> > rows;
+  long width = 0;
+  std::vector<std::pair<long, long> > widest; // (span width, row), the widest span of each row first
+  long height() const { return long(rows.size()); }
+};
+
+// Merges the spans of one row into sorted disjoint ones.
+inline void merge_spans(std::vector<Chart_mask::Span>& row)
+{
+  std::sort(row.begin(), row.end());
+  std::size_t k = 0;
+  for(std::size_t i = 0; i < row.size(); ++i) {
+    if(k > 0 && row[i].first <= row[k - 1].second)
+      row[k - 1].second = (std::max)(row[k - 1].second, row[i].second);
+    else
+      row[k++] = row[i];
+  }
+  row.resize(k);
+}
+
+inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri, double scale, long pad)
+{
+  Chart_mask m;
+  std::vector<std::vector<Chart_mask::Span> > cut; // per row, the cells the triangles cut out
+  for(const Triangle& t : tri) {
+    const Vec2 p[3] = {{uv[std::size_t(t[0])][0] * scale, uv[std::size_t(t[0])][1] * scale},
+                       {uv[std::size_t(t[1])][0] * scale, uv[std::size_t(t[1])][1] * scale},
+                       {uv[std::size_t(t[2])][0] * scale, uv[std::size_t(t[2])][1] * scale}};
+    const double y_low = (std::min)({p[0][1], p[1][1], p[2][1]}), y_high = (std::max)({p[0][1], p[1][1], p[2][1]});
+    const long r0 = (std::max)(0L, long(std::floor(y_low))), r1 = (std::max)(r0, long(std::floor(y_high)));
+    for(long r = r0; r <= r1; ++r) {
+      // the triangle cut by the band r <= y <= r + 1: its corners inside and its sides' crossings
+      double x0 = HUGE_VAL, x1 = -HUGE_VAL;
+      for(int i = 0; i < 3; ++i) {
+        const Vec2 &a = p[i], &b = p[(i + 1) % 3];
+        if(a[1] >= double(r) && a[1] <= double(r + 1)) { x0 = (std::min)(x0, a[0]); x1 = (std::max)(x1, a[0]); }
+        for(double y : {double(r), double(r + 1)})
+          if((a[1] - y) * (b[1] - y) < 0.) {
+            const double x = a[0] + (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]);
+            x0 = (std::min)(x0, x); x1 = (std::max)(x1, x);
+          }
+      }
+      if(x0 > x1) continue;
+      const long c0 = (std::max)(0L, long(std::floor(x0))), c1 = (std::max)(c0, long(std::floor(x1)));
+      if(cut.size() <= std::size_t(r)) cut.resize(std::size_t(r + 1));
+      cut[std::size_t(r)].emplace_back(c0, c1 + 1);
+    }
+  }
+  // widened by `pad` all round: row r gathers the rows r - 2 pad to r of the cut, shifted
+  m.rows.resize(cut.size() + std::size_t(2 * pad));
+  for(std::size_t r = 0; r < cut.size(); ++r) {
+    merge_spans(cut[r]);
+    for(const Chart_mask::Span& span : cut[r]) {
+      m.width = (std::max)(m.width, span.second + 2 * pad);
+      for(std::size_t k = r; k <= r + std::size_t(2 * pad); ++k)
+        m.rows[k].emplace_back(span.first, span.second + 2 * pad);
+    }
+  }
+  for(long r = 0; r < m.height(); ++r) {
+    auto& row = m.rows[std::size_t(r)];
+    merge_spans(row);
+    long w = 0;
+    for(const Chart_mask::Span& span : row) w = (std::max)(w, span.second - span.first);
+    if(w > 0) m.widest.emplace_back(w, r);
+  }
+  std::sort(m.widest.begin(), m.widest.end(), std::greater<std::pair<long, long> >());
+  return m;
+}
+
+// The widest span of the widest row of `m`.
+inline Chart_mask::Span widest_span(const Chart_mask& m)
+{
+  Chart_mask::Span best(0, 0);
+  for(const Chart_mask::Span& s : m.rows[std::size_t(m.widest.front().second)])
+    if(s.second - s.first > best.second - best.first) best = s;
+  return best;
+}
+
+// The cells taken so far, per row as in Chart_mask, in a strip of `width` columns, with the
+// longest free run of each row (rows above the top are free).
+class Occupancy
+{
+public:
+  explicit Occupancy(long width) : width_(width) {}
+  long height() const { return long(rows_.size()); }
+
+  // Whether `m` fits with its corner at (x, y); if not, `next_x` receives an x > `x` below
+  // which it does not fit either (the span that collided has to pass the cells it met).
+  bool fits(const Chart_mask& m, long x, long y, long& next_x) const
+  {
+    for(const auto& w : m.widest) { // wide spans collide most: try them first
+      const long r = w.second;
+      if(y + r >= height()) continue;
+      const auto& row = rows_[std::size_t(y + r)];
+      for(const Chart_mask::Span& s : m.rows[std::size_t(r)]) {
+        // the first taken span ending after the chart's span begins
+        const auto it = std::upper_bound(row.begin(), row.end(), x + s.first,
+                                         [](long v, const Chart_mask::Span& t) { return v < t.second; });
+        if(it != row.end() && it->first < x + s.second) {
+          next_x = it->second - s.first;
+          return false;
+        }
+      }
+    }
+    return true;
+  }
+
+  void take(const Chart_mask& m, long x, long y)
+  {
+    if(rows_.size() < std::size_t(y + m.height())) {
+      rows_.resize(std::size_t(y + m.height()));
+      free_run_.resize(rows_.size(), width_);
+    }
+    for(long r = 0; r < m.height(); ++r) {
+      auto& row = rows_[std::size_t(y + r)];
+      if(m.rows[std::size_t(r)].empty()) continue;
+      for(const Chart_mask::Span& s : m.rows[std::size_t(r)])
+        row.emplace_back(x + s.first, x + s.second);
+      merge_spans(row);
+      long run = 0, end = 0;
+      for(const Chart_mask::Span& s : row) { run = (std::max)(run, s.first - end); end = s.second; }
+      free_run_[std::size_t(y + r)] = (std::max)(run, width_ - end);
+    }
+  }
+
+  // The place for `m` that keeps the square [0, side]^2 holding everything smallest (the
+  // square so far is `side`), then the chart's top lowest, then leftmost, if it is better
+  // than (`best_side`, `best_top`) (-1: nothing yet); they and (`at_x`, `at_y`) are then
+  // updated. Rows are searched upwards only while they may lead to a better place, and in a
+  // row only the free runs under the chart's widest span that are long enough for it.
+  bool best_place(const Chart_mask& m, long side, long& best_side, long& best_top, long& at_x, long& at_y) const
+  {
+    if(m.widest.empty()) return false;
+    const long wide_row = m.widest.front().second;
+    const Chart_mask::Span wide = widest_span(m);
+    const std::size_t probes = (std::min)(m.widest.size(), std::size_t(4));
+    const long bound = best_side < 0 ? width_ : best_side; // no square beyond this side
+    bool found = false;
+    for(long y = 0; y + m.height() <= bound; ++y) {
+      // past these rows, no place is better: either the square or the top grows
+      if(best_side >= 0 && (best_side == side ? y + m.height() >= best_top : y + m.height() > best_side)) break;
+      bool room = true; // rows whose longest free run is shorter than the chart's span there
+      for(std::size_t i = 0; i < probes && room; ++i)
+        room = y + m.widest[i].second >= height() || free_run_[std::size_t(y + m.widest[i].second)] >= m.widest[i].first;
+      if(!room) continue;
+      const long r = y + wide_row, right = bound - m.width; // the last corner x worth trying
+      long gap_begin = 0, x_found = -1;
+      const std::size_t spans = r < height() ? rows_[std::size_t(r)].size() : 0;
+      for(std::size_t i = 0; i <= spans && x_found < 0; ++i) {
+        const long gap_end = i < spans ? rows_[std::size_t(r)][i].first : width_;
+        // the chart's corner x such that its widest span lies in [gap_begin, gap_end)
+        const long last = (std::min)(gap_end - wide.second, right);
+        for(long x = (std::max)(0L, gap_begin - wide.first); x <= last;) {
+          long next = x + 1;
+          if(fits(m, x, y, next)) { x_found = x; break; }
+          x = (std::max)(next, x + 1);
+        }
+        if(i < spans) gap_begin = rows_[std::size_t(r)][i].second;
+        if(gap_begin - wide.first > right) break;
+      }
+      if(x_found < 0) continue;
+      const long square = (std::max)({side, x_found + m.width, y + m.height()});
+      if(best_side < 0 || square < best_side || (square == best_side && y + m.height() < best_top)) {
+        best_side = square; best_top = y + m.height(); at_x = x_found; at_y = y;
+        found = true;
+      }
+    }
+    return found;
+  }
+
+private:
+  long width_;
+  std::vector<std::vector<Chart_mask::Span> > rows_;
+  std::vector<long> free_run_;
+};
+
+// Places the charts, largest first, each in the quarter turn and at the place that keeps the
+// square holding them all smallest: inside the square so far where the chart's top rests
+// lowest, else where the square grows least. Returns the side of the square, -1 if it would
+// exceed `limit` cells.
+inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, const std::vector<double>& area,
+                         long limit, std::vector<long>& at_x, std::vector<long>& at_y, std::vector<int>& turn)
+{
+  const std::size_t n = masks.size();
   std::vector<std::size_t> order(n);
   for(std::size_t i = 0; i < n; ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&area](std::size_t a, std::size_t b) {
     return area[a] != area[b] ? area[a] > area[b] : a < b;
   });
-  std::vector<long> sky(std::size_t(width), 0);
-  at_x.assign(n, 0); at_y.assign(n, 0); is_turned.assign(n, 0);
-  long used = 0, height = 0;
+  Occupancy occupancy(limit);
+  at_x.assign(n, 0); at_y.assign(n, 0); turn.assign(n, 0);
+  long side = 0;
   for(std::size_t i : order) {
-    long best_top = -1, best_x = 0, best_y = 0;
-    bool best_turned = false;
-    for(int k = 0; k < 2; ++k) {
-      const Chart_profile& p = k ? turned[i] : straight[i];
-      for(long x = 0; x + p.width() <= width; ++x) {
-        long y = 0;
-        for(long c = 0; c < p.width(); ++c)
-          if(p.bottom[std::size_t(c)] >= 0) y = (std::max)(y, sky[std::size_t(x + c)] - p.bottom[std::size_t(c)]);
-        long top = 0;
-        for(long c = 0; c < p.width(); ++c)
-          if(p.top[std::size_t(c)] >= 0) top = (std::max)(top, y + p.top[std::size_t(c)] + 1);
-        if(best_top < 0 || top < best_top) {
-          best_top = top; best_x = x; best_y = y; best_turned = k != 0;
-        }
-      }
-    }
-    if(best_top < 0) return -1; // wider than the strip
-    const Chart_profile& p = best_turned ? turned[i] : straight[i];
-    for(long c = 0; c < p.width(); ++c)
-      if(p.top[std::size_t(c)] >= 0) {
-        long& s = sky[std::size_t(best_x + c)];
-        s = (std::max)(s, best_y + p.top[std::size_t(c)] + 1);
-        used = (std::max)(used, best_x + c + 1);
-      }
-    at_x[i] = best_x; at_y[i] = best_y; is_turned[i] = best_turned;
-    height = (std::max)(height, best_top);
+    long best_side = -1, best_top = -1;
+    for(int k = 0; k < 4; ++k)
+      if(occupancy.best_place(masks[i][std::size_t(k)], side, best_side, best_top, at_x[i], at_y[i]))
+        turn[i] = k;
+    if(best_side < 0) return -1;
+    occupancy.take(masks[i][std::size_t(turn[i])], at_x[i], at_y[i]);
+    side = best_side;
   }
-  return (std::max)(used, height);
+  return side;
+}
+
+// The chart `uv` (its lower left corner at the origin, `extent` wide and high) turned by
+// `k` quarter turns counterclockwise, its lower left corner again at the origin.
+inline std::vector<Vec2> turned_chart(const std::vector<Vec2>& uv, const Vec2& extent, int k)
+{
+  std::vector<Vec2> out(uv.size());
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    const Vec2& q = uv[v];
+    switch(k) {
+      case 1: out[v] = {extent[1] - q[1], q[0]}; break;
+      case 2: out[v] = {extent[0] - q[0], extent[1] - q[1]}; break;
+      case 3: out[v] = {q[1], extent[0] - q[0]}; break;
+      default: out[v] = q;
+    }
+  }
+  return out;
 }
 
 // Packs the charts (`uv[c]`, each in its own frame, with its triangles `tri[c]`, its uv area
 // and its surface area) into the unit square, in place: on a grid of `resolution` cells a
 // side, each chart's triangles widened by half the gutter, so that two charts are at least a
-// gutter apart and never overlap.
+// gutter apart and never overlap. The search for the scale starts at `scale_hint` if given
+// (the scale of a packing of about the same charts).
 inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
                                   const std::vector<double>& area_uv, const std::vector<double>& area_3d,
-                                  const Packing_settings& settings)
+                                  const Packing_settings& settings, double scale_hint = 0.)
 {
   Packing_result r;
   const std::size_t n = uv.size();
@@ -167,64 +336,67 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   // one texel density; a chart without surface area gets the size of a small one
   double charts_area = 0.;
   std::vector<double> area(n);
-  std::vector<std::vector<Vec2> > turned_uv(n);
+  std::vector<std::array<std::vector<Vec2>, 4> > turned_uv(n);
   for(std::size_t c = 0; c < n; ++c) {
     double s = area_uv[c] > 0. && area_3d[c] > 0. ? std::sqrt(area_3d[c] / area_uv[c]) : 0.;
-    const Vec2 extent = align_chart(uv[c]);
+    Vec2 extent = align_chart(uv[c]);
     if(!(s > 0.) || !std::isfinite(s)) {
       const double e = (std::max)(extent[0], extent[1]);
       s = e > 0. ? 1e-4 * std::sqrt(total_3d) / e : 1.;
     }
     for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
-    turned_uv[c].reserve(uv[c].size());
-    for(const Vec2& q : uv[c]) turned_uv[c].push_back({s * extent[1] - q[1], q[0]}); // +90 degrees
+    extent = {s * extent[0], s * extent[1]};
+    for(int k = 0; k < 4; ++k)
+      turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
     area[c] = s * s * area_uv[c];
     charts_area += area[c];
   }
 
-  // cells per surface unit: the square of `resolution` cells should hold the charts; shrink
-  // until it does, then grow while it still does
+  // cells per surface unit: the largest scale tried whose square fits the texture
   const long cells = long((std::max)(settings.resolution, 16u));
   const long pad = long(std::ceil(0.5 * settings.gutter));
-  double scale = double(cells) * std::sqrt(0.5 / total_3d), best_scale = 0.;
+  double best_scale = 0.;
   std::vector<long> x, y, best_x, best_y;
-  std::vector<char> turned, best_turned;
+  std::vector<int> turn, best_turn;
   long best_side = 0;
-  for(int round = 0; round < 12; ++round) {
-    std::vector<Chart_profile> straight(n), rotated(n);
-    bool fits = true;
-    for(std::size_t c = 0; c < n && fits; ++c) {
-      straight[c] = chart_profile(uv[c], tri[c], scale, pad);
-      rotated[c] = chart_profile(turned_uv[c], tri[c], scale, pad);
-      fits = (std::min)(straight[c].width(), rotated[c].width()) <= cells;
+  const auto pack = [&](double scale) { // the side of the square at `scale`, -1 beyond the texture
+    std::vector<std::array<Chart_mask, 4> > masks(n);
+    for(std::size_t c = 0; c < n; ++c)
+      for(std::size_t k = 0; k < 4; ++k)
+        masks[c][k] = chart_mask(turned_uv[c][k], tri[c], scale, pad);
+    const long side = place_charts(masks, area, cells, x, y, turn);
+    if(side > 0 && scale > best_scale) {
+      best_scale = scale; best_side = side; best_x = x; best_y = y; best_turn = turn;
     }
-    const long side = fits ? skyline_place(straight, rotated, area, cells, x, y, turned) : -1;
-    if(side > 0 && side <= cells) {
-      if(scale > best_scale) {
-        best_scale = scale; best_side = side; best_x = x; best_y = y; best_turned = turned;
-      }
-      if(side > 0.97 * double(cells)) break;
-      scale *= (std::min)(1.5, 0.99 * double(cells) / double(side));
-    } else {
-      scale *= side > 0 ? (std::max)(0.5, 0.98 * double(cells) / double(side)) : 0.7;
-    }
+    return side;
+  };
+  // the side grows about linearly with the scale: aim at the texture's side, between the
+  // scales found to fit and not to fit
+  double scale = scale_hint > 0. ? scale_hint : double(cells) * std::sqrt(0.6 / total_3d), too_large = HUGE_VAL;
+  for(int round = 0; round < 10; ++round) {
+    const long side = pack(scale);
+    if(side > 0.98 * double(cells)) break;
+    if(side < 0) too_large = (std::min)(too_large, scale);
+    double next = side > 0 ? scale * 0.995 * double(cells) / double(side) : 0.85 * scale;
+    if(next <= best_scale || next >= too_large)
+      next = best_scale > 0. ? (too_large < HUGE_VAL ? std::sqrt(best_scale * too_large) : 1.02 * best_scale)
+                             : 0.85 * too_large;
+    if(too_large < 1.01 * best_scale) break;
+    scale = next;
   }
   if(best_scale == 0.) { // could not fit at any tried scale: one chart per row of the square
     best_scale = scale;
-    best_x.assign(n, 0); best_y.assign(n, 0); best_turned.assign(n, 0);
+    best_x.assign(n, 0); best_y.assign(n, 0); best_turn.assign(n, 0);
     long row = 0;
     for(std::size_t c = 0; c < n; ++c) {
       best_y[c] = row;
-      const Chart_profile p = chart_profile(uv[c], tri[c], scale, pad);
-      long top = 0;
-      for(long t : p.top) top = (std::max)(top, t + 1);
-      row += top;
+      row += chart_mask(uv[c], tri[c], scale, pad).height();
     }
     best_side = (std::max)(row, cells);
   }
   const double side = double((std::max)(best_side, 1L));
   for(std::size_t c = 0; c < n; ++c) {
-    const std::vector<Vec2>& from = best_turned[c] ? turned_uv[c] : uv[c];
+    const std::vector<Vec2>& from = turned_uv[c][std::size_t(best_turn[c])];
     std::vector<Vec2> placed(from.size());
     for(std::size_t v = 0; v < from.size(); ++v)
       placed[v] = {(std::min)((double(best_x[c] + pad) + from[v][0] * best_scale) / side, 1.),
@@ -232,6 +404,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     uv[c].swap(placed);
   }
   r.side = side / best_scale;
+  r.scale = best_scale * double(cells) / side;
   r.utilization = charts_area * best_scale * best_scale / (side * side);
   return r;
 }

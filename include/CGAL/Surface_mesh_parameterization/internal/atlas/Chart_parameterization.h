@@ -9,6 +9,7 @@
 // fixed square border, then the polish with a free border (flip-free, the border never
 // crossing itself). A chart of one triangle is laid out isometrically.
 
+#include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
@@ -16,6 +17,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 
 #include <cmath>
 #include <cstddef>
@@ -111,7 +113,10 @@ inline void parameterize_chart(const Atlas_triangles& m, Chart_growing& g, Chart
     for(vertex_descriptor v : vertices(sm))
       put(vimap, v, int(v));
     namespace P = parameters;
-    Stretch_minimizing_parameterizer_3<Mesh> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH,
+    // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
+    // border) would make a flat triangle on a side of a square
+    typedef Shape_preserving_parameterizer_3<Mesh, Circular_border_arc_length_parameterizer_3<Mesh> > Initial;
+    Stretch_minimizing_parameterizer_3<Mesh, Initial> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH,
         P::polish_iterations(settings.polish_iterations, P::free_border(true, P::number_of_threads(1u)))));
     if(p.parameterize(sm, bhd, uvmap, vimap, vpmap) != OK)
       return;
