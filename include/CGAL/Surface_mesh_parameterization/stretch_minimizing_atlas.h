@@ -137,9 +137,6 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   const double first_angle = 70. * 3.14159265358979323846 / 180.;
   int n = g.grow(allowed, 0, first_angle, 0);
   std::vector<double> angle(std::size_t(n), first_angle);
-  double atlas_area = 0.;
-  for(const auto& v : m.vertex)
-    atlas_area += triangle_area(m.xyz[std::size_t(v[0])], m.xyz[std::size_t(v[1])], m.xyz[std::size_t(v[2])]);
   r.seconds_cutting += seconds_since(t0);
 
   // flatten every chart; a chart above the bound (or that cannot be flattened) is grown again
