@@ -169,6 +169,16 @@ Soup polygons()
   return s;
 }
 
+// A needle (a triangle 2000 times longer than high, one chart that cannot be cut) beside a
+// small square: the needle alone decides the scale of the packing.
+Soup needle()
+{
+  Soup s{"needle and square", {}, {}};
+  s.points = {Point(0, 0, 0), Point(2000, 0, 0), Point(0, 1, 0), Point(0, 3, 0), Point(1, 3, 0), Point(1, 4, 0), Point(0, 4, 0)};
+  s.polygons = {{0, 1, 2}, {3, 4, 5, 6}};
+  return s;
+}
+
 void run(const Soup& s, double max_l2)
 {
   const SMP::Atlas atlas = SMP::make_atlas(s.points, s.polygons);
@@ -176,16 +186,30 @@ void run(const Soup& s, double max_l2)
   SMP_CHECK(r.status == SMP::OK, s.name << ": " << r.message);
   if(r.status != SMP::OK) return;
   SMP_CHECK(atlas.uv.size() == s.polygons.size() && atlas.chart.size() == s.polygons.size(), s.name);
-  // fans of the polygons; their 3D area decides whether the uv must be positive
+  // fans of the polygons, each from the first corner whose fan is positive in uv (the atlas
+  // may split a polygon along other diagonals; a polygon without one is checked from corner
+  // 0); their 3D area decides whether the uv must be positive
   std::vector<std::array<std::size_t, 4> > tri;
   std::vector<char> positive;
   for(std::size_t p = 0; p < s.polygons.size(); ++p) {
     const Polygon& q = s.polygons[p];
-    SMP_CHECK(atlas.uv[p].size() == q.size(), s.name << ": polygon " << p);
-    if(q.size() == 3) {
-      tri.push_back({p, 0, 1, 2});
-      const Point &a = s.points[q[0]], &b = s.points[q[1]], &c = s.points[q[2]];
-      positive.push_back(CGAL::squared_area(a, b, c) > 0.);
+    const std::size_t n = q.size();
+    SMP_CHECK(atlas.uv[p].size() == n, s.name << ": polygon " << p);
+    if(atlas.uv[p].size() != n || n < 3) continue;
+    const auto& uv = atlas.uv[p];
+    auto positive_uv = [&uv](std::size_t a, std::size_t b, std::size_t c) {
+      return (uv[b][0] - uv[a][0]) * (uv[c][1] - uv[a][1]) - (uv[c][0] - uv[a][0]) * (uv[b][1] - uv[a][1]) > 0.;
+    };
+    std::size_t start = 0;
+    for(std::size_t k = 0; k < n; ++k) {
+      bool all = true;
+      for(std::size_t i = 1; i + 1 < n && all; ++i) all = positive_uv(k, (k + i) % n, (k + i + 1) % n);
+      if(all) { start = k; break; }
+    }
+    for(std::size_t i = 1; i + 1 < n; ++i) {
+      const std::size_t a = start, b = (start + i) % n, c = (start + i + 1) % n;
+      tri.push_back({p, a, b, c});
+      positive.push_back(CGAL::squared_area(s.points[q[a]], s.points[q[b]], s.points[q[c]]) > 0.);
     }
   }
   const smp_test::Atlas_check c = smp_test::check_atlas(atlas, tri, positive);
@@ -260,6 +284,7 @@ int main(int argc, char** argv)
   run(join(sphere(12, 24), torus(30, 12, false), "sphere and torus", 4.), 1.05);
   run(non_manifold(), 1.05);
   run(polygons(), 1.05);
+  run(needle(), 1.05);
   for(const char* name : {"bear.off", "pig.off", "holes.off", "mannequin-devil.off", "three_peaks.off"})
     run(read(name), 1.05);
   return smp_test::summary();

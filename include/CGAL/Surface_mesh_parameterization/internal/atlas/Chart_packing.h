@@ -334,7 +334,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   for(double a : area_3d) total_3d += a;
   if(!(total_3d > 0.)) total_3d = 1.;
   // one texel density; a chart without surface area gets the size of a small one
-  double charts_area = 0.;
+  double charts_area = 0., longest = 0.;
   std::vector<double> area(n);
   std::vector<std::array<std::vector<Vec2>, 4> > turned_uv(n);
   for(std::size_t c = 0; c < n; ++c) {
@@ -346,6 +346,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     }
     for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
     extent = {s * extent[0], s * extent[1]};
+    longest = (std::max)(longest, extent[0]);
     for(int k = 0; k < 4; ++k)
       turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
     area[c] = s * s * area_uv[c];
@@ -371,8 +372,11 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     return side;
   };
   // the side grows about linearly with the scale: aim at the texture's side, between the
-  // scales found to fit and not to fit
+  // scales found to fit and not to fit, never above the scale where the longest chart alone
+  // spans the texture
+  const double alone = double(cells - 2 * pad - 2) / longest;
   double scale = scale_hint > 0. ? scale_hint : double(cells) * std::sqrt(0.6 / total_3d), too_large = HUGE_VAL;
+  if(alone > 0. && scale > alone) scale = alone;
   for(int round = 0; round < 10; ++round) {
     const long side = pack(scale);
     if(side > 0.98 * double(cells)) break;
@@ -384,15 +388,17 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     if(too_large < 1.01 * best_scale) break;
     scale = next;
   }
-  if(best_scale == 0.) { // could not fit at any tried scale: one chart per row of the square
+  if(best_scale == 0.) { // could not fit at any tried scale: one chart per row of a larger square
     best_scale = scale;
     best_x.assign(n, 0); best_y.assign(n, 0); best_turn.assign(n, 0);
-    long row = 0;
+    long row = 0, widest = 0;
     for(std::size_t c = 0; c < n; ++c) {
+      const Chart_mask m = chart_mask(uv[c], tri[c], scale, pad);
       best_y[c] = row;
-      row += chart_mask(uv[c], tri[c], scale, pad).height();
+      row += m.height();
+      widest = (std::max)(widest, m.width);
     }
-    best_side = (std::max)(row, cells);
+    best_side = (std::max)({row, widest, cells});
   }
   const double side = double((std::max)(best_side, 1L));
   for(std::size_t c = 0; c < n; ++c) {
