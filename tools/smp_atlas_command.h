@@ -35,12 +35,8 @@ int run_atlas(const Options& o)
 
   // ---- write: the input's vertices and polygons, a uv per corner
   const auto t2 = std::chrono::steady_clock::now();
-  std::error_code ec;
-  fs::create_directories(o.output, ec);
-  if(ec)
-    die("cannot create the output folder " + o.output + ": " + ec.message());
+  const fs::path dir = output_folder(o);
   const std::string name = fs::path(o.input).stem().string();
-  const fs::path dir(o.output);
   std::vector<std::string> outputs;
   {
     std::ostringstream obj;
@@ -59,9 +55,7 @@ int run_atlas(const Options& o)
         obj << " " << v + 1 << "/" << vt++;
       obj << "\n";
     }
-    write_atomically(dir / (name + ".obj"), obj.str());
-    outputs.push_back(name + ".obj");
-    write_material(dir, name, outputs);
+    write_textured_obj(dir, name, obj.str(), outputs);
   }
   const double write_seconds = seconds_since(t2);
 
@@ -110,11 +104,8 @@ int run_atlas(const Options& o)
        << json_number(r.seconds_parameterization) << ", \"packing\": " << json_number(r.seconds_packing)
        << ", \"atlas\": " << json_number(r.seconds) << ", \"write\": " << json_number(write_seconds)
        << ", \"pictures\": " << json_number(render_seconds) << "},\n"
-       << "  \"outputs\": [";
-  for(std::size_t i = 0; i < outputs.size(); ++i)
-    json << (i ? ", " : "") << json_string(outputs[i]);
-  json << "]\n}\n";
-  write_atomically(dir / "report.json", json.str());
+       << "  ";
+  write_report(dir, json, outputs);
   if(!o.quiet)
     std::cout << "wrote " << fs::absolute(dir).string() << "/{" << name << ".obj, report.json"
               << (o.pictures ? ", *.png" : "") << "}" << std::endl;

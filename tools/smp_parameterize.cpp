@@ -127,6 +127,14 @@ Options parse(int argc, char** argv)
       die("option " + option + ": '" + text + "' is not a number", 2);
     return x;
   };
+  // a whole number from `low` to `high` (`unit`: what it counts, for the message)
+  auto whole_number = [&](const std::string& option, int& i, double low, double high, const std::string& unit) {
+    const double n = number(option, value(i));
+    if(n < low || n > high || n != std::floor(n))
+      die("option " + option + ": give a whole number " + unit + "from " + std::to_string(long(low)) + " to " +
+          std::to_string(long(high)), 2);
+    return int(n);
+  };
   for(int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if(a == "-h" || a == "--help") { std::cout << usage; std::exit(0); }
@@ -137,37 +145,17 @@ Options parse(int argc, char** argv)
     else if(a == "--start") o.start = value(i);
     else if(a == "--update") o.update = value(i);
     else if(a == "--rule") o.rule = value(i);
-    else if(a == "--descent") {
-      const double n = number(a, value(i));
-      if(n < 0 || n > 100000 || n != std::floor(n)) die("option --descent: give a whole number from 0 to 100000", 2);
-      o.descent = int(n);
-    }
-    else if(a == "--polish") {
-      const double n = number(a, value(i));
-      if(n < 0 || n > 100000 || n != std::floor(n)) die("option --polish: give a whole number from 0 to 100000", 2);
-      o.polish = int(n);
-    }
+    else if(a == "--descent") o.descent = whole_number(a, i, 0, 100000, "");
+    else if(a == "--polish") o.polish = whole_number(a, i, 0, 100000, "");
     else if(a == "--polish-time") {
       o.polish_time = number(a, value(i));
       if(!(o.polish_time > 0.)) die("option --polish-time: give a positive number of seconds", 2);
     }
     else if(a == "--free-border") o.free_border = true;
     else if(a == "--eta") o.eta = number(a, value(i));
-    else if(a == "--iterations") {
-      const double n = number(a, value(i));
-      if(n < 0 || n > 10000 || n != std::floor(n)) die("option --iterations: give a whole number from 0 to 10000", 2);
-      o.iterations = int(n);
-    }
-    else if(a == "--threads") {
-      const double n = number(a, value(i));
-      if(n < 0 || n > 1024 || n != std::floor(n)) die("option --threads: give a whole number from 0 to 1024", 2);
-      o.threads = int(n);
-    }
-    else if(a == "--size") {
-      const double n = number(a, value(i));
-      if(n < 64 || n > 8192 || n != std::floor(n)) die("option --size: give a whole number of pixels from 64 to 8192", 2);
-      o.size = int(n);
-    }
+    else if(a == "--iterations") o.iterations = whole_number(a, i, 0, 10000, "");
+    else if(a == "--threads") o.threads = whole_number(a, i, 0, 1024, "");
+    else if(a == "--size") o.size = whole_number(a, i, 64, 8192, "of pixels ");
     else if(a == "--up") {
       const std::string axis = value(i);
       if(axis != "x" && axis != "y" && axis != "z") die("option --up: give x, y or z", 2);
@@ -180,11 +168,7 @@ Options parse(int argc, char** argv)
       o.max_stretch = number(a, value(i));
       if(!(o.max_stretch >= 1.) || !std::isfinite(o.max_stretch)) die("option --max-stretch: give a number of at least 1", 2);
     }
-    else if(a == "--resolution") {
-      const double n = number(a, value(i));
-      if(n < 16 || n > 65536 || n != std::floor(n)) die("option --resolution: give a whole number of texels from 16 to 65536", 2);
-      o.resolution = int(n);
-    }
+    else if(a == "--resolution") o.resolution = whole_number(a, i, 16, 65536, "of texels ");
     else if(a == "--gutter") {
       o.gutter = number(a, value(i));
       if(!(o.gutter >= 0. && o.gutter <= 64.)) die("option --gutter: give a number of texels from 0 to 64", 2);
@@ -352,6 +336,16 @@ void check_input_file(const Options& o)
     die("cannot open " + o.input);
 }
 
+// The output folder, created if it is not there.
+fs::path output_folder(const Options& o)
+{
+  std::error_code ec;
+  fs::create_directories(o.output, ec);
+  if(ec)
+    die("cannot create the output folder " + o.output + ": " + ec.message());
+  return fs::path(o.output);
+}
+
 // Writes `text` to `file` through a temporary name, so that a failure never leaves a file that
 // looks complete.
 void write_atomically(const fs::path& file, const std::string& text)
@@ -373,14 +367,29 @@ void write_atomically(const fs::path& file, const std::string& text)
     die("cannot write " + file.string() + ": " + ec.message());
 }
 
-// The MTL of NAME.obj and its checkerboard texture.
-void write_material(const fs::path& dir, const std::string& name, std::vector<std::string>& outputs)
+// NAME.obj (`obj`: its text, which uses material "checker" of NAME.mtl), its MTL and its
+// checkerboard texture.
+void write_textured_obj(const fs::path& dir, const std::string& name, const std::string& obj,
+                        std::vector<std::string>& outputs)
 {
+  write_atomically(dir / (name + ".obj"), obj);
+  outputs.push_back(name + ".obj");
   write_atomically(dir / (name + ".mtl"), "newmtl checker\nKa 1 1 1\nKd 1 1 1\nKs 0 0 0\nmap_Kd checker.png\n");
   outputs.push_back(name + ".mtl");
   if(!smp_tools::write_checkerboard_png((dir / "checker.png").string(), 512, 16))
     die("cannot write " + (dir / "checker.png").string());
   outputs.push_back("checker.png");
+}
+
+// Ends `json` (its fields so far, the last one followed by a comma) with the list of the files
+// written, and writes it as report.json.
+void write_report(const fs::path& dir, std::ostringstream& json, const std::vector<std::string>& outputs)
+{
+  json << "\"outputs\": [";
+  for(std::size_t i = 0; i < outputs.size(); ++i)
+    json << (i ? ", " : "") << json_string(outputs[i]);
+  json << "]\n}\n";
+  write_atomically(dir / "report.json", json.str());
 }
 
 // The uv layout by stretch, and the surface with the checkerboard (`checks` squares a side)
@@ -535,12 +544,8 @@ int main(int argc, char** argv)
 
   // ---- write
   const auto t2 = std::chrono::steady_clock::now();
-  std::error_code ec;
-  fs::create_directories(o.output, ec);
-  if(ec)
-    die("cannot create the output folder " + o.output + ": " + ec.message());
+  const fs::path dir = output_folder(o);
   const std::string name = fs::path(o.input).stem().string();
-  const fs::path dir(o.output);
   std::vector<std::string> outputs;
   {
     std::ostringstream obj;
@@ -557,9 +562,7 @@ int main(int argc, char** argv)
         obj << " " << v.idx() + 1 << "/" << v.idx() + 1;
       obj << "\n";
     }
-    write_atomically(dir / (name + ".obj"), obj.str());
-    outputs.push_back(name + ".obj");
-    write_material(dir, name, outputs);
+    write_textured_obj(dir, name, obj.str(), outputs);
   }
   const double write_seconds = seconds_since(t2);
 
@@ -604,11 +607,8 @@ int main(int argc, char** argv)
        << "  \"seconds\": {\"read\": " << json_number(read_seconds) << ", \"parameterize\": " << json_number(parameterize_seconds)
        << ", \"measure\": " << json_number(measure_seconds) << ", \"write\": " << json_number(write_seconds)
        << ", \"pictures\": " << json_number(render_seconds) << "},\n"
-       << "  \"outputs\": [";
-  for(std::size_t i = 0; i < outputs.size(); ++i)
-    json << (i ? ", " : "") << json_string(outputs[i]);
-  json << "]\n}\n";
-  write_atomically(dir / "report.json", json.str());
+       << "  ";
+  write_report(dir, json, outputs);
 
   if(!o.quiet)
     std::cout << o.method << ": L2 stretch " << std::setprecision(6) << stats.l2_stretch << ", Linf " << stats.linf_stretch
