@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -64,6 +65,7 @@ namespace internal {
 struct Atlas_settings
 {
   double max_stretch = 1.05;
+  unsigned int threads = 0; // 0: one per core
   Packing_settings packing;
   Chart_parameterization_settings chart;
 };
@@ -75,6 +77,7 @@ Atlas_settings read_atlas_settings(const NamedParameters& np)
   using parameters::get_parameter;
   Atlas_settings s;
   s.max_stretch = choose_parameter(get_parameter(np, internal_np::max_stretch), s.max_stretch);
+  s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), s.threads);
   s.packing.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.packing.resolution);
   s.packing.gutter = choose_parameter(get_parameter(np, internal_np::gutter), s.packing.gutter);
   s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
@@ -134,7 +137,10 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   auto t0 = std::chrono::steady_clock::now();
   Chart_growing g(m);
   std::vector<char> allowed(nt, 1);
-  const double first_angle = 70. * 3.14159265358979323846 / 180.;
+  // a polygon joins a chart while its normal is within a right angle of the chart's: narrower
+  // cones cut many more seams for little less stretch, wider ones make charts that take
+  // longer to flatten and are cut more often for their stretch
+  const double first_angle = 0.5 * 3.14159265358979323846;
   int n = g.grow(allowed, 0, first_angle, 0);
   std::vector<double> angle(std::size_t(n), first_angle);
   r.seconds_cutting += seconds_since(t0);
@@ -186,68 +192,85 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     charts[c] = Chart_map();
     return true;
   };
-  auto settle = [&](std::size_t begin) { // the charts from `begin` on, and the ones they are cut into
-    for(std::size_t c = begin; c < charts.size(); ++c) {
-      if(charts[c].triangles.empty())
-        charts[c].triangles = members[c];
+  // a flattened chart c above the bound is cut in two across its length; one that could not
+  // be flattened is grown again with a narrower cone, or, if it is one polygon, split into
+  // its triangles laid out alone
+  auto cut_if_needed = [&](std::size_t c) {
+    if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
+      return;
+    const std::vector<std::size_t> triangles = charts[c].triangles;
+    const std::size_t units = units_of(triangles);
+    if(units < 2) {
+      if(!charts[c].ok)
+        for(std::size_t i = 0; i < triangles.size(); ++i) {
+          Chart_map single;
+          single.triangles = {triangles[i]};
+          make_chart_vertices(m, g, single);
+          layout_single_triangle(single);
+          single.ok = true;
+          single.l2 = 1.;
+          if(i == 0) charts[c] = single;
+          else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
+        }
+      return;
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    if(charts[c].ok) {
+      const Chart_areas a = chart_areas(charts[c]);
+      std::vector<double> along;
+      chart_length(charts[c].uv, charts[c].flat.tri, a.uv, a.surface, along);
+      if(cut_across(c, along)) {
+        r.seconds_cutting += seconds_since(t1);
+        return;
+      }
+    }
+    allowed.assign(nt, 0);
+    for(std::size_t t : triangles) allowed[t] = 1;
+    const double a = angle[c] * 0.6;
+    const int first = int(charts.size());
+    const int made = g.grow(allowed, first, a, (units + 1) / 2, 2);
+    collect(first, made, triangles);
+    charts.resize(std::size_t(first + made));
+    angle.resize(std::size_t(first + made), a);
+    charts[c] = Chart_map(); // emptied: its triangles are in the new charts
+    r.seconds_cutting += seconds_since(t1);
+  };
+  // flattens the charts from `begin` on, and the ones they are cut into, a batch at a time:
+  // the charts of a batch on several threads (the corners' union-find is shared: the chart
+  // vertices are numbered before), then their cuts in order
+  const unsigned int threads = thread_count(settings.threads);
+  auto settle = [&](std::size_t begin) {
+    for(std::size_t end = begin; begin < charts.size(); begin = end) {
+      end = charts.size();
       auto t1 = std::chrono::steady_clock::now();
-      parameterize_chart(m, g, charts[c], settings.chart);
+      for(std::size_t c = begin; c < end; ++c) {
+        if(charts[c].triangles.empty())
+          charts[c].triangles = members[c];
+        make_chart_vertices(m, g, charts[c]);
+      }
+      parallel_for_each(end - begin, threads, [&](std::size_t i) { flatten_chart(charts[begin + i], settings.chart); });
       r.seconds_parameterization += seconds_since(t1);
-      if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
-        continue;
-      const std::vector<std::size_t> triangles = charts[c].triangles;
-      const std::size_t units = units_of(triangles);
-      if(units < 2) {
-        if(!charts[c].ok) { // one polygon that could not be flattened: its triangles laid out alone
-          for(std::size_t i = 0; i < triangles.size(); ++i) {
-            Chart_map single;
-            single.triangles = {triangles[i]};
-            make_chart_vertices(m, g, single);
-            layout_single_triangle(single);
-            single.ok = true;
-            single.l2 = 1.;
-            if(i == 0) charts[c] = single;
-            else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
-          }
-        }
-        continue;
-      }
-      t1 = std::chrono::steady_clock::now();
-      if(charts[c].ok) { // flattened, above the bound: cut in two across its length
-        const Chart_areas a = chart_areas(charts[c]);
-        std::vector<double> along;
-        chart_length(charts[c].uv, charts[c].flat.tri, a.uv, a.surface, along);
-        if(cut_across(c, along)) {
-          r.seconds_cutting += seconds_since(t1);
-          continue;
-        }
-      }
-      allowed.assign(nt, 0);
-      for(std::size_t t : triangles) allowed[t] = 1;
-      const double a = angle[c] * 0.6;
-      const int first = int(charts.size());
-      const int made = g.grow(allowed, first, a, (units + 1) / 2, 2);
-      collect(first, made, triangles);
-      charts.resize(std::size_t(first + made));
-      angle.resize(std::size_t(first + made), a);
-      charts[c] = Chart_map(); // emptied: its triangles are in the new charts
-      r.seconds_cutting += seconds_since(t1);
+      for(std::size_t c = begin; c < end; ++c)
+        cut_if_needed(c);
     }
   };
   settle(0);
 
-  // pack the charts that hold triangles; while the square is poorly filled, the longest charts
-  // (the ones that leave the most room unused around them) are cut across and all packed again
+  // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
+  // longest chart (the one that leaves the most room unused around it) is cut across
   auto t2 = std::chrono::steady_clock::now();
   const double other_stages = r.seconds_cutting + r.seconds_parameterization;
   std::vector<std::size_t> kept;
   std::vector<std::vector<Vec2> > uv;
-  Packing_result packed;
+  std::vector<std::vector<Triangle> > chart_triangles;
+  std::vector<double> area_uv, area_3d;
+  double scale_hint = 0.;
   for(int round = 0;; ++round) {
     kept.clear();
     uv.clear();
-    std::vector<std::vector<Triangle> > chart_triangles;
-    std::vector<double> area_uv, area_3d;
+    chart_triangles.clear();
+    area_uv.clear();
+    area_3d.clear();
     for(std::size_t c = 0; c < charts.size(); ++c) {
       if(charts[c].triangles.empty()) continue;
       kept.push_back(c);
@@ -257,27 +280,33 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       uv.push_back(charts[c].uv);
       chart_triangles.push_back(charts[c].flat.tri);
     }
-    packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, packed.scale);
-    if(packed.utilization >= settings.packing.goal || round == settings.packing.max_cut_rounds)
+    if(round == settings.packing.max_cut_rounds)
       break;
-    // the longest charts, within 10% of the longest
-    std::vector<std::pair<double, std::size_t> > length;
-    std::vector<std::vector<double> > along(kept.size());
+    std::vector<std::vector<Vec2> > turned = uv;
+    const Packing_result estimate =
+      estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d), settings.packing, scale_hint);
+    scale_hint = estimate.scale;
+    if(estimate.utilization >= settings.packing.goal)
+      break;
+    // the longest chart that can be cut
+    double longest = 0.;
+    std::size_t cut = kept.size();
+    std::vector<double> along, best_along;
     for(std::size_t i = 0; i < kept.size(); ++i)
-      if(units_of(charts[kept[i]].triangles) >= 2)
-        length.emplace_back(chart_length(charts[kept[i]].uv, chart_triangles[i], area_uv[i], area_3d[i], along[i]), i);
-    std::sort(length.begin(), length.end(), std::greater<std::pair<double, std::size_t> >());
+      if(units_of(charts[kept[i]].triangles) >= 2) {
+        const double l = chart_length(charts[kept[i]].uv, chart_triangles[i], area_uv[i], area_3d[i], along);
+        if(l > longest) { longest = l; cut = i; best_along.swap(along); }
+      }
     const auto t3 = std::chrono::steady_clock::now();
     const std::size_t begin = charts.size();
-    for(const auto& e : length) {
-      if(e.first < 0.9 * length.front().first) break;
-      cut_across(kept[e.second], along[e.second]);
-    }
+    if(cut < kept.size())
+      cut_across(kept[cut], best_along);
     r.seconds_cutting += seconds_since(t3);
     if(charts.size() == begin)
       break;
     settle(begin);
   }
+  const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
   r.utilization = packed.utilization;
   r.charts = kept.size();
   r.seconds_packing = seconds_since(t2) - (r.seconds_cutting + r.seconds_parameterization - other_stages);
@@ -384,6 +413,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
 ///     \cgalParamDescription{texels left between two charts (half of it along the sides of the square)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`2`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_threads}
+///     \cgalParamDescription{threads flattening the charts (0: one per core); the atlas does not depend on it}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{polish_iterations}
 ///     \cgalParamDescription{free-border Newton steps per chart}

@@ -10,7 +10,10 @@
 // depend on the number of threads, bit for bit.
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
+#include <exception>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -56,6 +59,41 @@ void parallel_for(std::size_t n, unsigned int threads, std::size_t min_chunk, co
     f(n * j / chunks, n * (j + 1) / chunks);
   for(std::thread& t : pool)
     t.join();
+}
+
+// Calls `f(i)` for every i in [0, n) on at most `threads` threads, each taking the next item
+// when it is done with one (for items of very different costs, such as the charts of an
+// atlas). The first exception thrown by `f` is rethrown here once every thread has stopped.
+template <typename Function>
+void parallel_for_each(std::size_t n, unsigned int threads, const Function& f)
+{
+  std::atomic<std::size_t> next(0);
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto work = [&]() {
+    for(std::size_t i = next++; i < n; i = next++) {
+      try {
+        f(i);
+      } catch(...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if(!error) error = std::current_exception();
+        next = n; // the others stop after their current item
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  const std::size_t helpers = (std::min)(std::size_t(threads), n) - (n > 0 && threads > 0 ? 1 : 0);
+  try {
+    for(std::size_t k = 0; k < helpers; ++k)
+      pool.emplace_back(work);
+  } catch(const std::system_error&) {
+    // no more threads: the calling thread and the ones started take every item
+  }
+  work();
+  for(std::thread& t : pool)
+    t.join();
+  if(error)
+    std::rethrow_exception(error);
 }
 
 } // namespace internal

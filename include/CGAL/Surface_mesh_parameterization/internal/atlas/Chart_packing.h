@@ -35,8 +35,9 @@ struct Packing_settings
 {
   unsigned int resolution = 1024; // texels along a side of the square texture
   double gutter = 2.;             // texels left between two charts and along the square's sides
-  double goal = 0.6;              // utilization below which the longest charts are cut across
-  int max_cut_rounds = 6;         // times they may be
+  unsigned int coarse_resolution = 256; // of the layouts that only estimate the utilization
+  double goal = 0.52;             // utilization below which the longest chart is cut across
+  int max_cut_rounds = 16;        // times one may be
 };
 
 struct Packing_result
@@ -318,11 +319,117 @@ inline std::vector<Vec2> turned_chart(const std::vector<Vec2>& uv, const Vec2& e
   return out;
 }
 
+// The charts of an atlas made ready for packing: each scaled to one texel density (its uv area
+// equal to its surface area), turned to its smallest bounding rectangle, in its four quarter
+// turns.
+struct Packing_input
+{
+  std::vector<std::array<std::vector<Vec2>, 4> > turned_uv;
+  const std::vector<std::vector<Triangle> >* tri = nullptr;
+  std::vector<double> area;       // uv area at that density
+  double charts_area = 0., longest = 0., total_3d = 0.;
+};
+
+// A layout of the charts on a grid of cells: the scale (cells per surface unit), the side of
+// the square holding them, and each chart's corner and quarter turn.
+struct Packing_layout
+{
+  double scale = 0.;
+  long side = 0;
+  std::vector<long> x, y;
+  std::vector<int> turn;
+};
+
+inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
+                                     const std::vector<double>& area_uv, const std::vector<double>& area_3d)
+{
+  Packing_input in;
+  const std::size_t n = uv.size();
+  in.tri = &tri;
+  for(double a : area_3d) in.total_3d += a;
+  if(!(in.total_3d > 0.)) in.total_3d = 1.;
+  in.area.resize(n);
+  in.turned_uv.resize(n);
+  for(std::size_t c = 0; c < n; ++c) {
+    // a chart without surface area gets the size of a small one
+    double s = area_uv[c] > 0. && area_3d[c] > 0. ? std::sqrt(area_3d[c] / area_uv[c]) : 0.;
+    Vec2 extent = align_chart(uv[c]);
+    if(!(s > 0.) || !std::isfinite(s)) {
+      const double e = (std::max)(extent[0], extent[1]);
+      s = e > 0. ? 1e-4 * std::sqrt(in.total_3d) / e : 1.;
+    }
+    for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
+    extent = {s * extent[0], s * extent[1]};
+    in.longest = (std::max)(in.longest, extent[0]);
+    for(int k = 0; k < 4; ++k)
+      in.turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
+    in.area[c] = s * s * area_uv[c];
+    in.charts_area += in.area[c];
+  }
+  return in;
+}
+
+// The layout at the largest scale found (in at most `tries` packings, from `scale` on) whose
+// square fits `cells` cells, each chart widened by `pad` cells; false if none fits.
+inline bool search_layout(const Packing_input& in, long cells, long pad, double scale, int tries, Packing_layout& best)
+{
+  const std::size_t n = in.area.size();
+  Packing_layout trial;
+  const auto pack = [&](double at) { // the side of the square at scale `at`, -1 beyond the texture
+    std::vector<std::array<Chart_mask, 4> > masks(n);
+    for(std::size_t c = 0; c < n; ++c)
+      for(std::size_t k = 0; k < 4; ++k)
+        masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], at, pad);
+    trial.side = place_charts(masks, in.area, cells, trial.x, trial.y, trial.turn);
+    trial.scale = at;
+    if(trial.side > 0 && at > best.scale)
+      best = trial;
+    return trial.side;
+  };
+  // the side grows about linearly with the scale: aim at the texture's side, between the
+  // scales found to fit and not to fit, never above the scale where the longest chart alone
+  // spans the texture
+  const double alone = double(cells - 2 * pad - 2) / in.longest;
+  double too_large = HUGE_VAL;
+  if(alone > 0. && scale > alone) scale = alone;
+  for(int round = 0; round < tries; ++round) {
+    const long side = pack(scale);
+    if(side > 0.98 * double(cells)) break;
+    if(side < 0) too_large = (std::min)(too_large, scale);
+    double next = side > 0 ? scale * 0.995 * double(cells) / double(side) : 0.85 * scale;
+    if(next <= best.scale || next >= too_large)
+      next = best.scale > 0. ? (too_large < HUGE_VAL ? std::sqrt(best.scale * too_large) : 1.02 * best.scale)
+                             : 0.85 * too_large;
+    if(too_large < 1.01 * best.scale) break;
+    scale = next;
+  }
+  return best.scale > 0.;
+}
+
+// The utilization of a coarse layout (`settings.coarse_resolution` cells a side, the gutter in
+// proportion), and its scale in cells of the full resolution: cheap, for deciding whether to
+// cut charts further, and where the full search starts.
+inline Packing_result estimate_packing(const Packing_input& in, const Packing_settings& settings, double scale_hint)
+{
+  Packing_result r;
+  if(in.area.empty()) return r;
+  const long cells = long((std::max)(settings.resolution, 16u));
+  const long coarse = (std::min)(cells, long((std::max)(settings.coarse_resolution, 16u)));
+  const double ratio = double(coarse) / double(cells);
+  const long pad = std::lround(0.5 * settings.gutter * ratio);
+  const double start = scale_hint > 0. ? scale_hint * ratio : double(coarse) * std::sqrt(0.6 / in.total_3d);
+  Packing_layout layout;
+  if(!search_layout(in, coarse, pad, start, 10, layout)) return r;
+  r.scale = layout.scale / ratio * double(coarse) / double(layout.side);
+  r.utilization = in.charts_area * layout.scale * layout.scale / (double(layout.side) * double(layout.side));
+  r.side = double(layout.side) / layout.scale;
+  return r;
+}
+
 // Packs the charts (`uv[c]`, each in its own frame, with its triangles `tri[c]`, its uv area
 // and its surface area) into the unit square, in place: on a grid of `resolution` cells a
 // side, each chart's triangles widened by half the gutter, so that two charts are at least a
-// gutter apart and never overlap. The search for the scale starts at `scale_hint` if given
-// (the scale of a packing of about the same charts).
+// gutter apart and never overlap. The scale is searched on a coarse grid first.
 inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
                                   const std::vector<double>& area_uv, const std::vector<double>& area_3d,
                                   const Packing_settings& settings, double scale_hint = 0.)
@@ -330,88 +437,37 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   Packing_result r;
   const std::size_t n = uv.size();
   if(n == 0) return r;
-  double total_3d = 0.;
-  for(double a : area_3d) total_3d += a;
-  if(!(total_3d > 0.)) total_3d = 1.;
-  // one texel density; a chart without surface area gets the size of a small one
-  double charts_area = 0., longest = 0.;
-  std::vector<double> area(n);
-  std::vector<std::array<std::vector<Vec2>, 4> > turned_uv(n);
-  for(std::size_t c = 0; c < n; ++c) {
-    double s = area_uv[c] > 0. && area_3d[c] > 0. ? std::sqrt(area_3d[c] / area_uv[c]) : 0.;
-    Vec2 extent = align_chart(uv[c]);
-    if(!(s > 0.) || !std::isfinite(s)) {
-      const double e = (std::max)(extent[0], extent[1]);
-      s = e > 0. ? 1e-4 * std::sqrt(total_3d) / e : 1.;
-    }
-    for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
-    extent = {s * extent[0], s * extent[1]};
-    longest = (std::max)(longest, extent[0]);
-    for(int k = 0; k < 4; ++k)
-      turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
-    area[c] = s * s * area_uv[c];
-    charts_area += area[c];
-  }
-
-  // cells per surface unit: the largest scale tried whose square fits the texture
+  const Packing_input in = prepare_packing(uv, tri, area_uv, area_3d);
   const long cells = long((std::max)(settings.resolution, 16u));
   const long pad = long(std::ceil(0.5 * settings.gutter));
-  double best_scale = 0.;
-  std::vector<long> x, y, best_x, best_y;
-  std::vector<int> turn, best_turn;
-  long best_side = 0;
-  const auto pack = [&](double scale) { // the side of the square at `scale`, -1 beyond the texture
-    std::vector<std::array<Chart_mask, 4> > masks(n);
-    for(std::size_t c = 0; c < n; ++c)
-      for(std::size_t k = 0; k < 4; ++k)
-        masks[c][k] = chart_mask(turned_uv[c][k], tri[c], scale, pad);
-    const long side = place_charts(masks, area, cells, x, y, turn);
-    if(side > 0 && scale > best_scale) {
-      best_scale = scale; best_side = side; best_x = x; best_y = y; best_turn = turn;
-    }
-    return side;
-  };
-  // the side grows about linearly with the scale: aim at the texture's side, between the
-  // scales found to fit and not to fit, never above the scale where the longest chart alone
-  // spans the texture
-  const double alone = double(cells - 2 * pad - 2) / longest;
-  double scale = scale_hint > 0. ? scale_hint : double(cells) * std::sqrt(0.6 / total_3d), too_large = HUGE_VAL;
-  if(alone > 0. && scale > alone) scale = alone;
-  for(int round = 0; round < 10; ++round) {
-    const long side = pack(scale);
-    if(side > 0.98 * double(cells)) break;
-    if(side < 0) too_large = (std::min)(too_large, scale);
-    double next = side > 0 ? scale * 0.995 * double(cells) / double(side) : 0.85 * scale;
-    if(next <= best_scale || next >= too_large)
-      next = best_scale > 0. ? (too_large < HUGE_VAL ? std::sqrt(best_scale * too_large) : 1.02 * best_scale)
-                             : 0.85 * too_large;
-    if(too_large < 1.01 * best_scale) break;
-    scale = next;
-  }
-  if(best_scale == 0.) { // could not fit at any tried scale: one chart per row of a larger square
-    best_scale = scale;
-    best_x.assign(n, 0); best_y.assign(n, 0); best_turn.assign(n, 0);
+  const Packing_result coarse = estimate_packing(in, settings, scale_hint);
+  const double start = coarse.scale > 0. ? coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
+  Packing_layout best;
+  if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 4 : 10, best)) {
+    // could not fit at any tried scale: one chart per row of a larger square
+    best.scale = start;
+    best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0);
     long row = 0, widest = 0;
     for(std::size_t c = 0; c < n; ++c) {
-      const Chart_mask m = chart_mask(uv[c], tri[c], scale, pad);
-      best_y[c] = row;
+      const Chart_mask m = chart_mask(uv[c], tri[c], best.scale, pad);
+      best.y[c] = row;
       row += m.height();
       widest = (std::max)(widest, m.width);
     }
-    best_side = (std::max)({row, widest, cells});
+    best.side = (std::max)({row, widest, cells});
   }
-  const double side = double((std::max)(best_side, 1L));
+  const double side = double((std::max)(best.side, 1L));
   for(std::size_t c = 0; c < n; ++c) {
-    const std::vector<Vec2>& from = turned_uv[c][std::size_t(best_turn[c])];
+    const std::vector<Vec2>& from = in.turned_uv[c][std::size_t(best.turn[c])];
     std::vector<Vec2> placed(from.size());
     for(std::size_t v = 0; v < from.size(); ++v)
-      placed[v] = {(std::min)((double(best_x[c] + pad) + from[v][0] * best_scale) / side, 1.),
-                   (std::min)((double(best_y[c] + pad) + from[v][1] * best_scale) / side, 1.)};
+      placed[v] = {(std::min)((double(best.x[c] + pad) + from[v][0] * best.scale) / side, 1.),
+                   (std::min)((double(best.y[c] + pad) + from[v][1] * best.scale) / side, 1.)};
     uv[c].swap(placed);
   }
-  r.side = side / best_scale;
-  r.scale = best_scale * double(cells) / side;
-  r.utilization = charts_area * best_scale * best_scale / (side * side);
+  r.side = side / best.scale;
+  r.scale = best.scale * double(cells) / side;
+  r.utilization = in.charts_area * best.scale * best.scale / (side * side);
   return r;
 }
 

@@ -83,12 +83,11 @@ inline void layout_single_triangle(Chart_map& chart)
     chart.uv = {Vec2{0., 0.}, Vec2{size, 0.}, Vec2{0.5 * size, 1e-3 * size}};
 }
 
-// Flattens the chart. On failure `chart.ok` is false and the caller splits the chart.
-inline void parameterize_chart(const Atlas_triangles& m, Chart_growing& g, Chart_map& chart,
-                               const Chart_parameterization_settings& settings)
+// Flattens the chart, whose vertices are made (`make_chart_vertices()`). On failure `chart.ok`
+// is false and the caller splits the chart. Charts can be flattened on several threads at once.
+inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings)
 {
   chart.ok = false;
-  make_chart_vertices(m, g, chart);
   if(chart.triangles.size() == 1) {
     layout_single_triangle(chart);
   } else {
