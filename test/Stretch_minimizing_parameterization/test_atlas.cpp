@@ -9,8 +9,12 @@
 #include "smp_test_util.h"
 #include "atlas_checks.h"
 
+#include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
 #include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
 
 #include <array>
@@ -18,6 +22,7 @@
 #include <cstddef>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -266,6 +271,45 @@ void bad_input()
             a.report.l2_stretch);
 }
 
+// The mesh version of make_atlas() writes, for each face and each of its halfedges, the uv the
+// soup version gives the corner of that face at the halfedge's target, and the face's chart
+// (the soup taken from the mesh by CGAL, whose polygons may start at another corner than the
+// ones the mesh was made of).
+template <typename Mesh>
+void mesh_atlas(const Soup& input, const std::string& type)
+{
+  Mesh mesh;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(input.points, input.polygons, mesh);
+  Soup s{input.name, {}, {}};
+  CGAL::Polygon_mesh_processing::polygon_mesh_to_polygon_soup(mesh, s.points, s.polygons);
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<Mesh>::face_descriptor face_descriptor;
+  typedef CGAL::Simple_cartesian<double>::Point_2 Point_2;
+  std::map<halfedge_descriptor, Point_2> uv;
+  std::map<face_descriptor, int> chart;
+  const SMP::Atlas_report r = SMP::make_atlas(mesh, boost::make_assoc_property_map(uv), boost::make_assoc_property_map(chart),
+                                              SMP::parameters::gutter(4.));
+  const SMP::Atlas soup = SMP::make_atlas(s.points, s.polygons, SMP::parameters::gutter(4.));
+  const std::string name = s.name + " as a " + type;
+  SMP_CHECK(r.status == SMP::OK && soup.report.status == SMP::OK, name << ": " << r.message);
+  SMP_CHECK(r.charts == soup.report.charts && r.l2_stretch == soup.report.l2_stretch, name);
+  SMP_CHECK(chart.size() == s.polygons.size(), name << ": " << chart.size() << " faces with a chart");
+  std::size_t i = 0, wrong = 0, halfedges_written = 0;
+  for(face_descriptor f : faces(mesh)) { // in the soup's order
+    wrong += chart[f] != int(soup.chart[i]);
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh)) {
+      std::size_t k = 0; // the soup's corner at the same position
+      while(k < s.polygons[i].size() && s.points[s.polygons[i][k]] != get(CGAL::vertex_point, mesh, target(h, mesh))) ++k;
+      wrong += k == s.polygons[i].size() || uv.count(h) == 0 ||
+               uv[h] != Point_2(soup.uv[i][k][0], soup.uv[i][k][1]);
+      ++halfedges_written;
+    }
+    ++i;
+  }
+  SMP_CHECK(wrong == 0, name << ": " << wrong << " faces or halfedges unlike the soup's atlas");
+  SMP_CHECK(uv.size() == halfedges_written, name << ": " << uv.size() << " halfedges written");
+}
+
 int main(int argc, char** argv)
 {
   if(argc > 1) { // a mesh given on the command line
@@ -277,6 +321,8 @@ int main(int argc, char** argv)
     return smp_test::summary();
   }
   bad_input();
+  mesh_atlas<CGAL::Surface_mesh<Point> >(torus(40, 16, true), "Surface_mesh");
+  mesh_atlas<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > >(torus(40, 16, false), "Polyhedron_3");
   run(torus(40, 16, false), 1.05);
   run(torus(40, 16, true), 1.05);
   run(double_torus(), 1.05);

@@ -15,12 +15,14 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/boost/graph/properties.h>
 
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
@@ -60,6 +62,12 @@ struct Atlas
 };
 
 namespace internal {
+
+// Tells the two versions of make_atlas() apart: the third argument of the soup's is a sequence
+// of named parameters, the mesh's a property map.
+template <typename T> struct Is_named_parameters : std::false_type {};
+template <typename T, typename Tag, typename Base>
+struct Is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type {};
 
 // The settings of make_atlas() read from named parameters.
 struct Atlas_settings
@@ -429,7 +437,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
 /// \returns the atlas; its `report.status` is `OK`, `ERROR_EMPTY_MESH` (no polygon) or
 /// `ERROR_WRONG_PARAMETER` (a coordinate that is not finite, an index out of range, a bad
 /// option: `report.message` says which); on an error `uv` and `chart` are empty.
-template <typename PointRange, typename PolygonRange, typename NamedParameters = parameters::Default_named_parameters>
+template <typename PointRange, typename PolygonRange, typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          , typename = std::enable_if_t<internal::Is_named_parameters<NamedParameters>::value>
+#endif
+          >
 Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
                  const NamedParameters& np = parameters::default_values())
 {
@@ -498,6 +510,75 @@ Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
   }
   r.seconds = internal::seconds_since(start);
   return atlas;
+}
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+///
+/// Makes a texture atlas of a polygon mesh (`Surface_mesh`, `Polyhedron_3`, any model of
+/// `FaceListGraph`): the same atlas as the polygon soup version of `make_atlas()` on the mesh's
+/// vertices and faces, written as a uv per halfedge (the uv of its target in its face: a vertex
+/// on a seam has one uv per chart) and a chart per face. The mesh may have any genus, several
+/// components, boundaries and faces of any size; it is not modified.
+///
+/// \tparam PolygonMesh a model of `FaceListGraph`
+/// \tparam HalfedgeUVMap a model of `WritablePropertyMap` from halfedges to a 2D point type
+///         constructible from two `double`s
+/// \tparam FaceChartMap a model of `WritablePropertyMap` from faces to an integer type
+/// \tparam NamedParameters a sequence of named parameters
+///
+/// \param pmesh the mesh
+/// \param uv_map receives the uv of every halfedge that has a face, in \f$ [0,1]^2 \f$
+/// \param chart_map receives the chart of every face, from 0
+/// \param np the named parameters of the soup version, and `vertex_point_map` (the points of
+///        `pmesh`, by default the internal property map for `CGAL::vertex_point_t`)
+///
+/// \returns the report; the maps are written only if its `status` is `OK`.
+template <typename PolygonMesh, typename HalfedgeUVMap, typename FaceChartMap,
+          typename NamedParameters = parameters::Default_named_parameters
+#ifndef DOXYGEN_RUNNING
+          , typename = std::enable_if_t<!internal::Is_named_parameters<FaceChartMap>::value>
+#endif
+          >
+Atlas_report make_atlas(const PolygonMesh& pmesh, HalfedgeUVMap uv_map, FaceChartMap chart_map,
+                        const NamedParameters& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
+  typedef typename boost::property_traits<FaceChartMap>::value_type Chart_index;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pmesh));
+  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point_3;
+
+  std::unordered_map<vertex_descriptor, std::size_t> index;
+  std::vector<Point_3> points;
+  for(vertex_descriptor v : vertices(pmesh)) {
+    index.emplace(v, points.size());
+    points.push_back(get(vpm, v));
+  }
+  std::vector<std::vector<std::size_t> > polygons;
+  for(face_descriptor f : faces(pmesh)) {
+    polygons.emplace_back();
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pmesh), pmesh))
+      polygons.back().push_back(index[target(h, pmesh)]);
+  }
+  const Atlas atlas = make_atlas(points, polygons, np);
+  if(atlas.report.status != OK)
+    return atlas.report;
+  std::size_t i = 0;
+  for(face_descriptor f : faces(pmesh)) {
+    put(chart_map, f, Chart_index(atlas.chart[i]));
+    std::size_t k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pmesh), pmesh)) {
+      put(uv_map, h, Point_2(atlas.uv[i][k][0], atlas.uv[i][k][1]));
+      ++k;
+    }
+    ++i;
+  }
+  return atlas.report;
 }
 
 } // namespace Surface_mesh_parameterization

@@ -14,10 +14,14 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
+#include <CGAL/Eigen_matrix.h>
+#include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+
+#include <Eigen/SparseLU>
 
 #include <cmath>
 #include <cstddef>
@@ -114,8 +118,11 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     namespace P = parameters;
     // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
     // border) would make a flat triangle on a side of a square
-    typedef Shape_preserving_parameterizer_3<Mesh, Circular_border_arc_length_parameterizer_3<Mesh> > Initial;
-    Stretch_minimizing_parameterizer_3<Mesh, Initial> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH,
+    // Eigen's LU: charts are small, and flattened on several threads at once, where
+    // SuiteSparse's solvers (through a multithreaded BLAS) made results vary from run to run
+    typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Solver;
+    typedef Shape_preserving_parameterizer_3<Mesh, Circular_border_arc_length_parameterizer_3<Mesh>, Solver> Initial;
+    Stretch_minimizing_parameterizer_3<Mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH,
         P::polish_iterations(settings.polish_iterations, P::free_border(true, P::number_of_threads(1u)))));
     if(p.parameterize(sm, bhd, uvmap, vimap, vpmap) != OK)
       return;
