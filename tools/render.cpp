@@ -72,7 +72,23 @@ bool write_checkerboard_png(const std::string& file, int size, int checks)
   return write_rgba_png(file, rgba, size, size);
 }
 
-bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size)
+std::array<double, 3> chart_color(int chart)
+{
+  // hues a golden angle apart, a lighter and a darker shade in turn
+  const double h = std::fmod(0.618033988749895 * double(chart), 1.) * 6., v = chart % 2 ? 0.95 : 0.75, s = 0.55;
+  const int i = int(h) % 6;
+  const double f = h - std::floor(h), p = v * (1. - s), q = v * (1. - s * f), t = v * (1. - s * (1. - f));
+  switch(i) {
+    case 0: return {v, t, p};
+    case 1: return {q, v, p};
+    case 2: return {p, v, t};
+    case 3: return {p, q, v};
+    case 4: return {t, p, v};
+    default: return {v, p, q};
+  }
+}
+
+bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size, bool by_chart)
 {
   cairo_surface_t* surface = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, size, size);
   cairo_t* cr = cairo_create(surface);
@@ -97,7 +113,8 @@ bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int
     cairo_line_to(cr, px(q[1]), py(q[1]));
     cairo_line_to(cr, px(q[2]), py(q[2]));
     cairo_close_path(cr);
-    const auto c = stretch_color(f < mesh.face_stretch.size() ? mesh.face_stretch[f] : 1.);
+    const auto c = by_chart && f < mesh.face_chart.size() ? chart_color(mesh.face_chart[f])
+                 : stretch_color(f < mesh.face_stretch.size() ? mesh.face_stretch[f] : 1.);
     cairo_set_source_rgb(cr, c[0], c[1], c[2]);
     if(edges) {
       cairo_fill_preserve(cr);

@@ -22,6 +22,7 @@ struct Textured_mesh
   std::vector<std::array<int, 3> > faces;          // vertex indices
   std::vector<std::array<std::array<double, 2>, 3> > corner_uv; // uv per face corner
   std::vector<double> face_stretch;                // normalized L2 stretch per face (<= 0: degenerate)
+  std::vector<int> face_chart;                     // chart per face (an atlas), or empty
 };
 
 // Colour of a stretch value: 1 (no stretch) is blue, 1.6 pale yellow, 2.5 orange, 4 and above
@@ -31,8 +32,12 @@ std::array<double, 3> stretch_color(double stretch);
 // Writes a size x size checkerboard with `checks` squares per side. Returns false on failure.
 bool write_checkerboard_png(const std::string& file, int size, int checks);
 
-// Draws the uv layout in the unit square, faces filled by stretch colour. False on failure.
-bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size);
+// Colour of a chart: neighbouring numbers get distant hues.
+std::array<double, 3> chart_color(int chart);
+
+// Draws the uv layout in the unit square, faces filled by stretch colour, or by chart colour if
+// `by_chart` (and `mesh.face_chart` is given). False on failure.
+bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size, bool by_chart = false);
 
 // Renders the surface with model axis `up` (0: x, 1: y, 2: z) upwards, seen from `yaw` degrees
 // around it (at 0 the viewer is on the -y side of the model for z up, on the +z side otherwise)

@@ -22,9 +22,20 @@ int run_atlas(const Options& o)
   if(!o.quiet)
     std::cout << "read " << points.size() << " vertices, " << polygons.size() << " polygons" << std::endl;
 
+  // progress on long runs: a line per stage, and at most one a second within a stage
+  double shown = 0.;
+  auto progress = [&](const SMP::Atlas_progress& p) {
+    static const char* const names[] = {"input", "flattening", "packing", "done"};
+    if(o.quiet || p.stage == SMP::Atlas_stage::DONE || (p.done < p.total && p.seconds < shown + 1.))
+      return;
+    shown = p.seconds;
+    std::cout << "  " << names[int(p.stage)] << ": " << p.done << " of " << p.total
+              << (p.stage == SMP::Atlas_stage::FLATTENING ? " charts" : p.stage == SMP::Atlas_stage::PACKING ? " packings" : "")
+              << ", " << std::setprecision(3) << p.seconds << " s" << std::endl;
+  };
   namespace P = SMP::parameters;
   const SMP::Atlas atlas = SMP::make_atlas(points, polygons,
-      P::max_stretch(o.max_stretch, P::resolution(unsigned(o.resolution), P::gutter(o.gutter))));
+      P::max_stretch(o.max_stretch, P::resolution(unsigned(o.resolution), P::gutter(o.gutter)).visitor(progress)));
   const SMP::Atlas_report& r = atlas.report;
   if(r.status != SMP::OK)
     die("no atlas of " + o.input + ": " + SMP::error_message(r.status) + ": " + r.message);
@@ -59,7 +70,7 @@ int run_atlas(const Options& o)
   }
   const double write_seconds = seconds_since(t2);
 
-  // ---- pictures: the polygons as fans, coloured by the stretch of their triangles
+  // ---- pictures: the polygons as fans, coloured by the stretch of their triangles and by chart
   const auto t3 = std::chrono::steady_clock::now();
   if(o.pictures) {
     smp_tools::Textured_mesh picture;
@@ -78,6 +89,7 @@ int run_atlas(const Options& o)
         picture.faces.push_back({int(polygons[f][0]), int(polygons[f][k]), int(polygons[f][k + 1])});
         picture.corner_uv.push_back(uv);
         picture.face_stretch.push_back(std::isfinite(s.l2) ? s.l2 : 0.);
+        picture.face_chart.push_back(int(atlas.chart[f]));
       }
     const double normalization = a3 > 0. ? std::sqrt(a2 / a3) : 1.;
     for(double& s : picture.face_stretch) s *= normalization;

@@ -392,7 +392,7 @@ void write_report(const fs::path& dir, std::ostringstream& json, const std::vect
   write_atomically(dir / "report.json", json.str());
 }
 
-// The uv layout by stretch, and the surface with the checkerboard (`checks` squares a side)
+// The uv layout by stretch (and by chart, for an atlas), and the surface with the checkerboard (`checks` squares a side)
 // and with the stretch colours, from three views.
 void write_pictures(const fs::path& dir, const std::string& name, const smp_tools::Textured_mesh& picture,
                     const Options& o, int checks, std::vector<std::string>& outputs)
@@ -401,6 +401,12 @@ void write_pictures(const fs::path& dir, const std::string& name, const smp_tool
   if(!smp_tools::write_uv_layout_png((dir / layout).string(), picture, o.size))
     die("cannot write " + layout);
   outputs.push_back(layout);
+  if(!picture.face_chart.empty()) {
+    const std::string charts = name + "_uv_charts.png";
+    if(!smp_tools::write_uv_layout_png((dir / charts).string(), picture, o.size, true))
+      die("cannot write " + charts);
+    outputs.push_back(charts);
+  }
   const struct { const char* view; double yaw, pitch; } views[] = {{"front", 0, 10}, {"side", 90, 10}, {"three_quarter", -40, 20}};
   for(const auto& view : views)
     for(bool checker : {true, false}) {

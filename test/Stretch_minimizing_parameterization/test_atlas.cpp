@@ -310,6 +310,27 @@ void mesh_atlas(const Soup& input, const std::string& type)
   SMP_CHECK(uv.size() == halfedges_written, name << ": " << uv.size() << " halfedges written");
 }
 
+// The visitor sees the stages in order, never more parts done than known, every chart grown
+// flattened before the packing (the packing's cuts are told as packing rounds), and the end.
+void progress()
+{
+  const Soup s = torus(40, 16, false);
+  std::vector<SMP::Atlas_progress> seen;
+  const SMP::Atlas a = SMP::make_atlas(s.points, s.polygons,
+                                       SMP::parameters::number_of_threads(2u).visitor([&seen](const SMP::Atlas_progress& p) { seen.push_back(p); }));
+  SMP_CHECK(a.report.status == SMP::OK && !seen.empty(), "visitor");
+  if(seen.empty()) return;
+  std::size_t wrong = 0, flattened = 0, known = 1;
+  for(std::size_t i = 0; i < seen.size(); ++i) {
+    wrong += seen[i].done > seen[i].total;
+    wrong += i > 0 && (seen[i].stage < seen[i - 1].stage || seen[i].seconds < seen[i - 1].seconds);
+    if(seen[i].stage == SMP::Atlas_stage::FLATTENING) { flattened = seen[i].done; known = seen[i].total; }
+  }
+  SMP_CHECK(wrong == 0 && seen.front().stage == SMP::Atlas_stage::INPUT && seen.back().stage == SMP::Atlas_stage::DONE &&
+            flattened > 0 && flattened == known, "visitor: " << seen.size() << " calls, " << wrong << " out of order, "
+            << flattened << " of " << known << " charts flattened before the packing");
+}
+
 int main(int argc, char** argv)
 {
   if(argc > 1) { // a mesh given on the command line
@@ -321,6 +342,7 @@ int main(int argc, char** argv)
     return smp_test::summary();
   }
   bad_input();
+  progress();
   mesh_atlas<CGAL::Surface_mesh<Point> >(torus(40, 16, true), "Surface_mesh");
   mesh_atlas<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > >(torus(40, 16, false), "Polyhedron_3");
   run(torus(40, 16, false), 1.05);

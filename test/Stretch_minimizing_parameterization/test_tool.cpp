@@ -290,6 +290,11 @@ void check_atlas()
               json.get<double>("atlas.utilization") > 0., mesh << ": report.json");
     SMP_CHECK(!fs::exists(dir + "/report.json.part"), "no temporary file left");
   }
+  // the pictures of an atlas: the uv layout by stretch and by chart too
+  const Result r = run("atlas_mix.off --atlas -q --size 120 -o out_atlas_pictures");
+  SMP_CHECK(r.status == 0 && fs::exists("out_atlas_pictures/atlas_mix_uv_charts.png") &&
+            fs::exists("out_atlas_pictures/atlas_mix_uv_stretch.png") &&
+            fs::exists("out_atlas_pictures/atlas_mix_checker_front.png"), "atlas pictures: " << r.err);
 }
 
 int main()

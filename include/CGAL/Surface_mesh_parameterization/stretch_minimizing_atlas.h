@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -53,6 +54,26 @@ struct Atlas_report
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
+/// The stages of `make_atlas()`, in order.
+enum class Atlas_stage
+{
+  INPUT,      ///< the polygons checked, welded and triangulated
+  FLATTENING, ///< charts grown, flattened, and cut while above the stretch bound
+  PACKING,    ///< the charts packed; the longest cut across while the square is poorly filled
+  DONE        ///< the atlas written
+};
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+/// What the `visitor` of `make_atlas()` is told, on the calling thread, as the work goes on.
+struct Atlas_progress
+{
+  Atlas_stage stage = Atlas_stage::INPUT; ///< the stage under way
+  std::size_t done = 0;                   ///< its parts done: charts flattened, or packings (the last one full)
+  std::size_t total = 0;                  ///< its parts known so far (cuts add charts; the packings stop when the square is full enough)
+  double seconds = 0.;                    ///< since the call started
+};
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
 /// A texture atlas: a uv per polygon corner and a chart per polygon, in the input's order.
 struct Atlas
 {
@@ -76,7 +97,28 @@ struct Atlas_settings
   unsigned int threads = 0; // 0: one per core
   Packing_settings packing;
   Chart_parameterization_settings chart;
+  std::function<void(const Atlas_progress&)> visitor;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  void tell(Atlas_stage stage, std::size_t done, std::size_t total) const
+  {
+    if(visitor)
+      visitor(Atlas_progress{stage, done, total, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+  }
 };
+
+// The visitor named parameter as a function of an Atlas_progress (its result is ignored).
+template <typename Visitor>
+std::function<void(const Atlas_progress&)> make_atlas_visitor(const Visitor& v)
+{
+  if constexpr(std::is_same<Visitor, CGAL::internal_np::Param_not_found>::value) {
+    return {};
+  } else {
+    static_assert(std::is_invocable<Visitor, const Atlas_progress&>::value,
+                  "the visitor of make_atlas() must be callable with a const Atlas_progress&");
+    return [v](const Atlas_progress& p) mutable { std::invoke(v, p); };
+  }
+}
 
 template <typename NamedParameters>
 Atlas_settings read_atlas_settings(const NamedParameters& np)
@@ -89,6 +131,7 @@ Atlas_settings read_atlas_settings(const NamedParameters& np)
   s.packing.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.packing.resolution);
   s.packing.gutter = choose_parameter(get_parameter(np, internal_np::gutter), s.packing.gutter);
   s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
+  s.visitor = make_atlas_visitor(get_parameter(np, CGAL::internal_np::visitor));
   return s;
 }
 
@@ -245,11 +288,13 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   };
   // flattens the charts from `begin` on, and the ones they are cut into, a batch at a time:
   // the charts of a batch on several threads (the corners' union-find is shared: the chart
-  // vertices are numbered before), then their cuts in order
+  // vertices are numbered before), then their cuts in order; told to the visitor if `visit`
   const unsigned int threads = thread_count(settings.threads);
-  auto settle = [&](std::size_t begin) {
+  const std::size_t chunk = 64 * std::size_t(threads); // charts between two visits of the visitor
+  std::size_t flattened = 0;
+  auto settle = [&](std::size_t begin, bool visit) {
     for(std::size_t end = begin; begin < charts.size(); begin = end) {
-      end = charts.size();
+      end = (std::min)(charts.size(), begin + chunk);
       auto t1 = std::chrono::steady_clock::now();
       for(std::size_t c = begin; c < end; ++c) {
         if(charts[c].triangles.empty())
@@ -258,11 +303,14 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       }
       parallel_for_each(end - begin, threads, [&](std::size_t i) { flatten_chart(charts[begin + i], settings.chart); });
       r.seconds_parameterization += seconds_since(t1);
+      flattened += end - begin;
       for(std::size_t c = begin; c < end; ++c)
         cut_if_needed(c);
+      if(visit)
+        settings.tell(Atlas_stage::FLATTENING, flattened, flattened + charts.size() - end);
     }
   };
-  settle(0);
+  settle(0, true);
 
   // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
   // longest chart (the one that leaves the most room unused around it) is cut across
@@ -273,7 +321,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   std::vector<std::vector<Triangle> > chart_triangles;
   std::vector<double> area_uv, area_3d;
   double scale_hint = 0.;
-  for(int round = 0;; ++round) {
+  int round = 0;
+  for(;; ++round) {
     kept.clear();
     uv.clear();
     chart_triangles.clear();
@@ -288,6 +337,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       uv.push_back(charts[c].uv);
       chart_triangles.push_back(charts[c].flat.tri);
     }
+    settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(settings.packing.max_cut_rounds) + 1);
     if(round == settings.packing.max_cut_rounds)
       break;
     std::vector<std::vector<Vec2> > turned = uv;
@@ -312,9 +362,10 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     r.seconds_cutting += seconds_since(t3);
     if(charts.size() == begin)
       break;
-    settle(begin);
+    settle(begin, false); // told as packing rounds
   }
   const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+  settings.tell(Atlas_stage::PACKING, std::size_t(round) + 1, std::size_t(round) + 1);
   r.utilization = packed.utilization;
   r.charts = kept.size();
   r.seconds_packing = seconds_since(t2) - (r.seconds_cutting + r.seconds_parameterization - other_stages);
@@ -432,6 +483,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{`10`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{visitor}
+///     \cgalParamDescription{called on the calling thread with an `Atlas_progress` at the end of
+///       each stage and as charts are flattened and packing rounds end (progress bars, logs)}
+///     \cgalParamType{a callable with a `const Atlas_progress&` (its result is ignored)}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the atlas; its `report.status` is `OK`, `ERROR_EMPTY_MESH` (no polygon) or
@@ -448,7 +505,8 @@ Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
   const auto start = std::chrono::steady_clock::now();
   Atlas atlas;
   Atlas_report& r = atlas.report;
-  const internal::Atlas_settings settings = internal::read_atlas_settings(np);
+  internal::Atlas_settings settings = internal::read_atlas_settings(np);
+  settings.start = start;
   auto fail = [&](Error_code e, const std::string& why) {
     Atlas a;
     a.report.status = e;
@@ -476,6 +534,7 @@ Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
   for(const auto& polygon : polygons)
     atlas.uv[p++].assign(polygon.size(), std::array<double, 2>{0., 0.});
   r.seconds_input = internal::seconds_since(start);
+  settings.tell(Atlas_stage::INPUT, 1, 1);
 
   std::vector<std::vector<char> > written;
   std::unordered_map<int, internal::Vec2> vertex_uv;
@@ -509,6 +568,7 @@ Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
     ++p;
   }
   r.seconds = internal::seconds_since(start);
+  settings.tell(Atlas_stage::DONE, 1, 1);
   return atlas;
 }
 
