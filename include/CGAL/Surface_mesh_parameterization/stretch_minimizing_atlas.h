@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -301,7 +302,13 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
           charts[c].triangles = members[c];
         make_chart_vertices(m, g, charts[c]);
       }
-      parallel_for_each(end - begin, threads, [&](std::size_t i) { flatten_chart(charts[begin + i], settings.chart); });
+      // the largest first: a large chart started last would keep one thread busy alone
+      std::vector<std::size_t> order(end - begin);
+      for(std::size_t i = 0; i < order.size(); ++i) order[i] = begin + i;
+      std::stable_sort(order.begin(), order.end(), [&charts](std::size_t a, std::size_t b) {
+        return charts[a].triangles.size() > charts[b].triangles.size();
+      });
+      parallel_for_each(order.size(), threads, [&](std::size_t i) { flatten_chart(charts[order[i]], settings.chart); });
       r.seconds_parameterization += seconds_since(t1);
       flattened += end - begin;
       for(std::size_t c = begin; c < end; ++c)
