@@ -4,11 +4,13 @@
 // make_atlas() on what users have: closed meshes of genus 0 to 2, several parts, holes,
 // non-manifold edges and vertices, quads and larger polygons, repeated vertices, polygons
 // without area; and on what it must refuse. Every atlas is checked by atlas_checks.h: uv in the
-// unit square, no flipped or flat triangle, no overlap (exact), every polygon written.
+// unit square, no flipped or flat triangle, no overlap (exact), every polygon written (as a fan,
+// or by ear clipping of its uv outline when it has no fan).
 
 #include "smp_test_util.h"
 #include "atlas_checks.h"
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -184,6 +186,49 @@ Soup needle()
   return s;
 }
 
+// Polygons with no fan (no corner sees the whole polygon): a U and, glued to its base, an E,
+// as in lettering.
+Soup letters()
+{
+  Soup s{"letters U and E", {}, {}};
+  s.points = {Point(0, 0, 0), Point(3, 0, 0), Point(3, 3, 0), Point(2, 3, 0), Point(2, 1, 0), Point(1, 1, 0),
+              Point(1, 3, 0), Point(0, 3, 0),
+              Point(3, -5, 0), Point(3, -4, 0), Point(1, -4, 0), Point(1, -3, 0), Point(3, -3, 0), Point(3, -2, 0),
+              Point(1, -2, 0), Point(1, -1, 0), Point(3, -1, 0), Point(0, -5, 0)};
+  s.polygons = {{0, 1, 2, 3, 4, 5, 6, 7}, {17, 8, 9, 10, 11, 12, 13, 14, 15, 16, 1, 0}};
+  return s;
+}
+
+// The triangles of a uv outline cut off ear by ear (exact predicates), empty if it is not a
+// simple polygon oriented counterclockwise.
+std::vector<std::array<std::size_t, 3> > ear_clipping(const std::vector<std::array<double, 2> >& uv)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 Point_2;
+  std::vector<Point_2> q;
+  for(const auto& c : uv) q.emplace_back(c[0], c[1]);
+  std::vector<std::size_t> left(uv.size());
+  for(std::size_t i = 0; i < left.size(); ++i) left[i] = i;
+  std::vector<std::array<std::size_t, 3> > ears;
+  while(left.size() >= 3) {
+    const std::size_t m = left.size();
+    bool cut = false;
+    for(std::size_t i = 0; i < m && !cut; ++i) {
+      const std::size_t a = left[(i + m - 1) % m], b = left[i], c = left[(i + 1) % m];
+      if(CGAL::orientation(q[a], q[b], q[c]) != CGAL::LEFT_TURN) continue;
+      bool empty = true;
+      for(std::size_t j : left)
+        if(j != a && j != b && j != c && CGAL::Triangle_2<CGAL::Epick>(q[a], q[b], q[c]).bounded_side(q[j]) != CGAL::ON_UNBOUNDED_SIDE)
+          empty = false;
+      if(!empty) continue;
+      ears.push_back({a, b, c});
+      left.erase(left.begin() + std::ptrdiff_t(i));
+      cut = true;
+    }
+    if(!cut) return {};
+  }
+  return ears;
+}
+
 void run(const Soup& s, double max_l2)
 {
   const SMP::Atlas atlas = SMP::make_atlas(s.points, s.polygons);
@@ -205,11 +250,20 @@ void run(const Soup& s, double max_l2)
     auto positive_uv = [&uv](std::size_t a, std::size_t b, std::size_t c) {
       return (uv[b][0] - uv[a][0]) * (uv[c][1] - uv[a][1]) - (uv[c][0] - uv[a][0]) * (uv[b][1] - uv[a][1]) > 0.;
     };
-    std::size_t start = 0;
-    for(std::size_t k = 0; k < n; ++k) {
+    std::size_t start = n;
+    for(std::size_t k = 0; k < n && start == n; ++k) {
       bool all = true;
       for(std::size_t i = 1; i + 1 < n && all; ++i) all = positive_uv(k, (k + i) % n, (k + i + 1) % n);
-      if(all) { start = k; break; }
+      if(all) start = k;
+    }
+    if(start == n) { // no fan (a polygon that is not star-shaped, e.g. a letter): ears of its outline
+      const std::vector<std::array<std::size_t, 3> > ears = ear_clipping(uv);
+      for(const auto& e : ears) {
+        tri.push_back({p, e[0], e[1], e[2]});
+        positive.push_back(1);
+      }
+      if(!ears.empty()) continue;
+      start = 0; // not a simple positive outline: its fan from corner 0 is reported
     }
     for(std::size_t i = 1; i + 1 < n; ++i) {
       const std::size_t a = start, b = (start + i) % n, c = (start + i + 1) % n;
@@ -353,6 +407,7 @@ int main(int argc, char** argv)
   run(non_manifold(), 1.05);
   run(polygons(), 1.05);
   run(needle(), 1.05);
+  run(letters(), 1.05);
   for(const char* name : {"bear.off", "pig.off", "holes.off", "mannequin-devil.off", "three_peaks.off"})
     run(read(name), 1.05);
   return smp_test::summary();
