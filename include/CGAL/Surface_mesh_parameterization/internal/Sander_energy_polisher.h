@@ -221,10 +221,15 @@ public:
   void compute(const Matrix& lower)
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
+    // a free border leaves the proxy singular (translations): CHOLMOD's LLT refuses it, where
+    // the LDLT factors it (the line search copes with the free translation)
     m_supernodal = lower.rows() >= supernodal_threshold;
     if(m_supernodal) {
+      m_large.cholmod().print = 0; // its failure is handled here, not printed
       m_large.compute(lower);
-      return;
+      if(m_large.info() == Eigen::Success)
+        return;
+      m_supernodal = false;
     }
 #endif
     m_small.compute(lower);

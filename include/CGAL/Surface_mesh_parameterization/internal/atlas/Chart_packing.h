@@ -443,7 +443,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   const Packing_result coarse = estimate_packing(in, settings, scale_hint);
   const double start = coarse.scale > 0. ? coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
   Packing_layout best;
-  if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 4 : 10, best)) {
+  if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, best)) {
     // could not fit at any tried scale: one chart per row of a larger square
     best.scale = start;
     best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0);
