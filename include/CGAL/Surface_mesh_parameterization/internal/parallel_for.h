@@ -83,6 +83,7 @@ void parallel_for_each(std::size_t n, unsigned int threads, const Function& f)
   };
   std::vector<std::thread> pool;
   const std::size_t helpers = (std::min)(std::size_t(threads), n) - (n > 0 && threads > 0 ? 1 : 0);
+  pool.reserve(helpers); // before any thread runs: a joinable thread must not be left behind
   try {
     for(std::size_t k = 0; k < helpers; ++k)
       pool.emplace_back(work);
