@@ -218,10 +218,11 @@ int main(int argc, char** argv)
 
   // triangles: each polygon split into a fan, from its first corner whose fan keeps the uv
   // orientation of the whole polygon (a non-convex polygon has a flipped fan from some corners:
-  // that would be the split's fault, not the atlas's), from corner 0 if none does. Zero uv area
+  // that would be the split's fault, not the atlas's); if none does, ear by ear if its outline
+  // is simple (a letter has no fan), else from corner 0. Zero uv area
   // on a triangle of positive 3D area is an infinite stretch: counted apart, out of the sums.
   std::vector<Triangle> tri;
-  std::size_t refanned = 0;
+  std::size_t refanned = 0, ear_clipped = 0;
   for(std::size_t f = 0; f < nf; ++f) {
     const auto& face = m.faces[f];
     const std::size_t n = face.size();
@@ -230,10 +231,44 @@ int main(int argc, char** argv)
     for(std::size_t k = 0; k < n; ++k) area += uv(k).x() * uv(k + 1).y() - uv(k + 1).x() * uv(k).y();
     const CGAL::Orientation polygon = area > 0. ? CGAL::POSITIVE : area < 0. ? CGAL::NEGATIVE : CGAL::ZERO;
     std::size_t apex = 0;
-    for(std::size_t a = 0; n > 3 && polygon != CGAL::ZERO && a < n; ++a) {
+    bool fan = n <= 3 || polygon == CGAL::ZERO;
+    for(std::size_t a = 0; !fan && a < n; ++a) {
       std::size_t k = 1;
       while(k + 1 < n && CGAL::orientation(uv(a), uv(a + k), uv(a + k + 1)) == polygon) ++k;
-      if(k + 1 == n) { apex = a; break; }
+      if(k + 1 == n) { apex = a; fan = true; }
+    }
+    if(!fan) { // no corner sees the whole outline (e.g. a letter): cut it ear by ear if it is simple
+      std::vector<std::size_t> left(n);
+      for(std::size_t k = 0; k < n; ++k) left[k] = k;
+      std::vector<std::array<std::size_t, 3> > ears;
+      while(left.size() >= 3) {
+        const std::size_t r = left.size();
+        bool cut = false;
+        for(std::size_t i = 0; i < r && !cut; ++i) {
+          const std::size_t a = left[(i + r - 1) % r], b = left[i], c = left[(i + 1) % r];
+          if(CGAL::orientation(uv(a), uv(b), uv(c)) != polygon) continue;
+          const Epick::Triangle_2 ear(uv(a), uv(b), uv(c));
+          bool empty = true;
+          for(std::size_t j : left)
+            if(j != a && j != b && j != c && ear.bounded_side(uv(j)) != CGAL::ON_UNBOUNDED_SIDE) empty = false;
+          if(!empty) continue;
+          ears.push_back({a, b, c});
+          left.erase(left.begin() + std::ptrdiff_t(i));
+          cut = true;
+        }
+        if(!cut) break;
+      }
+      if(ears.size() + 2 == n) {
+        ++ear_clipped;
+        for(const auto& e : ears) {
+          Triangle t;
+          t.face = f;
+          t.c = {face[e[0]], face[e[1]], face[e[2]]};
+          measure(m, t);
+          tri.push_back(t);
+        }
+        continue;
+      }
     }
     refanned += apex != 0;
     for(std::size_t k = 1; k + 1 < n; ++k) {
@@ -310,6 +345,7 @@ int main(int argc, char** argv)
   };
   put("faces", double(nf)); put("corners", double(corners)); put("triangles", double(tri.size()));
   put("refanned_faces", double(refanned));
+  put("ear_clipped_faces", double(ear_clipped));
   put("charts", double(used_charts)); put("mirrored_charts", double(mirrored));
   put("l2", l2); put("linf", linf * normalization);
   put("degenerate_uv", double(degenerate_uv)); put("degenerate_3d", double(degenerate_3d));
