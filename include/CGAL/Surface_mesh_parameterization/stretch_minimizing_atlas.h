@@ -13,6 +13,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/boost/graph/properties.h>
@@ -247,6 +248,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // a flattened chart c above the bound is cut in two across its length; one that could not
   // be flattened is grown again with a narrower cone, or, if it is one polygon, split into
   // its triangles laid out alone
+  std::vector<Chart_areas> areas; // per chart, measured once it is flattened
   auto cut_if_needed = [&](std::size_t c) {
     if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
       return;
@@ -261,14 +263,14 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
           layout_single_triangle(single);
           single.ok = true;
           single.l2 = 1.;
-          if(i == 0) charts[c] = single;
+          if(i == 0) { charts[c] = single; areas[c] = chart_areas(single); }
           else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
         }
       return;
     }
     const auto t1 = std::chrono::steady_clock::now();
     if(charts[c].ok) {
-      const Chart_areas a = chart_areas(charts[c]);
+      const Chart_areas& a = areas[c];
       std::vector<double> along;
       chart_length(charts[c].uv, charts[c].flat.tri, a.uv, a.surface, along);
       if(cut_across(c, along)) {
@@ -308,7 +310,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       std::stable_sort(order.begin(), order.end(), [&charts](std::size_t a, std::size_t b) {
         return charts[a].triangles.size() > charts[b].triangles.size();
       });
-      parallel_for_each(order.size(), threads, [&](std::size_t i) { flatten_chart(charts[order[i]], settings.chart); });
+      areas.resize(charts.size());
+      parallel_for_each(order.size(), threads, [&](std::size_t i) {
+        flatten_chart(charts[order[i]], settings.chart);
+        areas[order[i]] = chart_areas(charts[order[i]]);
+      });
       r.seconds_parameterization += seconds_since(t1);
       flattened += end - begin;
       for(std::size_t c = begin; c < end; ++c)
@@ -338,9 +344,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     for(std::size_t c = 0; c < charts.size(); ++c) {
       if(charts[c].triangles.empty()) continue;
       kept.push_back(c);
-      const Chart_areas a = chart_areas(charts[c]);
-      area_uv.push_back(a.uv);
-      area_3d.push_back(a.surface);
+      area_uv.push_back(areas[c].uv);
+      area_3d.push_back(areas[c].surface);
       uv.push_back(charts[c].uv);
       chart_triangles.push_back(charts[c].flat.tri);
     }
@@ -609,29 +614,17 @@ template <typename PolygonMesh, typename HalfedgeUVMap, typename FaceChartMap,
 Atlas_report make_atlas(const PolygonMesh& pmesh, HalfedgeUVMap uv_map, FaceChartMap chart_map,
                         const NamedParameters& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   typedef typename boost::property_traits<HalfedgeUVMap>::value_type Point_2;
   typedef typename boost::property_traits<FaceChartMap>::value_type Chart_index;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pmesh));
-  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point_3;
+  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::const_type Vertex_point_map;
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point_3;
 
-  std::unordered_map<vertex_descriptor, std::size_t> index;
+  // the faces in the order of faces(pmesh), each from the target of halfedge(f, pmesh) on
   std::vector<Point_3> points;
-  for(vertex_descriptor v : vertices(pmesh)) {
-    index.emplace(v, points.size());
-    points.push_back(get(vpm, v));
-  }
   std::vector<std::vector<std::size_t> > polygons;
-  for(face_descriptor f : faces(pmesh)) {
-    polygons.emplace_back();
-    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, pmesh), pmesh))
-      polygons.back().push_back(index[target(h, pmesh)]);
-  }
+  CGAL::Polygon_mesh_processing::polygon_mesh_to_polygon_soup(pmesh, points, polygons, np);
   const Atlas atlas = make_atlas(points, polygons, np);
   if(atlas.report.status != OK)
     return atlas.report;
