@@ -1,13 +1,26 @@
 #!/usr/bin/env bash
-# Builds the tests with AddressSanitizer and UndefinedBehaviorSanitizer in build/asan and runs them.
+# Builds the tests and examples with AddressSanitizer and UndefinedBehaviorSanitizer in build/asan
+# and runs them. Against CGAL 6.1.1 when ../shared/cgal holds its headers (CI: the release build
+# of scripts/test.sh uses Debian's CGAL 5.5.1, so one CI run builds and tests both), else against
+# Debian's CGAL.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
 bash scripts/install-deps.sh
 
+cgal=()
+archive=../shared/cgal/CGAL-6.1.1-headers.tar.xz
+if [ -f "$archive" ]; then
+  if [ ! -f build/cgal-6.1.1/CGALConfig.cmake ]; then
+    mkdir -p build/cgal-6.1.1
+    tar xJf "$archive" -C build/cgal-6.1.1
+  fi
+  cgal=(-DCGAL_DIR="$PWD/build/cgal-6.1.1")
+fi
+
 # Without UMFPACK: the release tests cover the UMFPACK default, these Eigen's SparseLU.
-cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Release -DSMP_SANITIZE=ON \
-  -DSMP_BUILD_TESTS=ON -DSMP_BUILD_EXAMPLES=OFF -DSMP_WITH_UMFPACK=OFF
+cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Release -DSMP_SANITIZE=ON "${cgal[@]}" \
+  -DSMP_BUILD_TESTS=ON -DSMP_BUILD_EXAMPLES=ON -DSMP_WITH_UMFPACK=OFF
 cmake --build build/asan -j2
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   ctest --test-dir build/asan --output-on-failure -j2

@@ -487,12 +487,10 @@ int main(int argc, char** argv)
     const SMP::Step_rule rule = o.rule == "halve" ? SMP::Step_rule::HALVE_ETA : SMP::Step_rule::STOP_AT_INCREASE;
     const unsigned int polish = o.method == "uopt" ? unsigned(o.polish) : 0u;
     const unsigned int descent = o.method == "uopt" ? unsigned(o.descent) : 0u;
-    auto np = SMP::parameters::start_weights(start, SMP::parameters::stretch_update(update,
-              SMP::parameters::step_rule(rule, SMP::parameters::descent_iterations(descent,
-              SMP::parameters::polish_iterations(polish,
-              SMP::parameters::polish_time_budget(o.polish_time, SMP::parameters::free_border(o.free_border,
-              SMP::parameters::number_of_threads(unsigned(o.threads),
-              SMP::parameters::eta(o.eta).number_of_iterations(cap).visitor(progress)))))))));
+    auto np = SMP::parameters::start_weights(start).stretch_update(update).step_rule(rule)
+              .descent_iterations(descent).polish_iterations(polish).polish_time_budget(o.polish_time)
+              .free_border(o.free_border).number_of_threads(unsigned(o.threads)).eta(o.eta)
+              .number_of_iterations(cap).visitor(progress);
     SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
     run_parameterizer(mesh, bhd, p, uv, o.charts, run);
     run.kept_step = p.report().kept_step;

@@ -15,6 +15,8 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
+#include <boost/variant.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -28,12 +30,20 @@
 #include <string>
 #include <tuple>
 #include <utility>
+#include <variant>
 #include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef CGAL::Exact_predicates_exact_constructions_kernel   Epeck;
 typedef std::array<double, 3>                               Vec3;
 typedef std::array<double, 2>                               Vec2;
+
+// The value of type T an intersection holds, or null: CGAL 5 returns a boost::variant, CGAL 6 a
+// std::variant.
+template <typename T, typename... U>
+const T* alternative_if(const boost::variant<U...>& v) { return boost::get<T>(&v); }
+template <typename T, typename... U>
+const T* alternative_if(const std::variant<U...>& v) { return std::get_if<T>(&v); }
 
 struct Corner { std::size_t v, t; };   // indices into the `v` and `vt` lines
 struct Obj
@@ -167,8 +177,8 @@ std::size_t count_overlaps(const Obj& m, const std::vector<Triangle>& tri, doubl
     if(separated(*a.handle(), *b.handle()) || separated(*b.handle(), *a.handle())) return;
     const auto result = CGAL::intersection(exact(*a.handle()), exact(*b.handle()));
     if(!result) return;
-    if(const Epeck::Triangle_2* x = boost::get<Epeck::Triangle_2>(&*result)) { ++count; sum += CGAL::abs(x->area()); }
-    else if(const auto* p = boost::get<std::vector<Epeck::Point_2> >(&*result)) { ++count; sum += polygon_area(*p); }
+    if(const Epeck::Triangle_2* x = alternative_if<Epeck::Triangle_2>(*result)) { ++count; sum += CGAL::abs(x->area()); }
+    else if(const auto* p = alternative_if<std::vector<Epeck::Point_2> >(*result)) { ++count; sum += polygon_area(*p); }
   });
   area = CGAL::to_double(sum);
   return count;

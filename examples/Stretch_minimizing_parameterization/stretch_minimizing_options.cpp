@@ -36,7 +36,7 @@ int main(int argc, char** argv)
   };
 
   // Smaller eta: smaller, steadier steps, usually a lower final stretch after more of them.
-  // A package name (eta) leads the chain; CGAL's names follow.
+  // A chain started in SMP::parameters takes the package's names (eta) and CGAL's in any order.
   for(double eta : {1.0, 0.5}) {
     SMP::Stretch_minimizing_parameterizer_3<Mesh> parameterizer(
       SMP::parameters::eta(eta).number_of_iterations(10).visitor(print_step));

@@ -14,12 +14,22 @@
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
+#include <boost/variant.hpp>
+
 #include <array>
 #include <cstddef>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace smp_test {
+
+// The value of type T an intersection holds, or null: CGAL 5 returns a boost::variant, CGAL 6 a
+// std::variant.
+template <typename T, typename... U>
+const T* alternative_if(const boost::variant<U...>& v) { return boost::get<T>(&v); }
+template <typename T, typename... U>
+const T* alternative_if(const std::variant<U...>& v) { return std::get_if<T>(&v); }
 
 struct Atlas_check
 {
@@ -62,7 +72,7 @@ inline Atlas_check check_atlas(const CGAL::Surface_mesh_parameterization::Atlas&
     const K::Triangle_2 &s = tri[x.handle()], &t = tri[y.handle()];
     const auto result = CGAL::intersection(s, t);
     if(!result) return;
-    if(boost::get<K::Triangle_2>(&*result) != nullptr || boost::get<std::vector<K::Point_2> >(&*result) != nullptr)
+    if(alternative_if<K::Triangle_2>(*result) != nullptr || alternative_if<std::vector<K::Point_2> >(*result) != nullptr)
       ++r.overlaps;
   });
   return r;

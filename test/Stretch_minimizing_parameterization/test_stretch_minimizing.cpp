@@ -115,8 +115,9 @@ void check_disk_mesh(const std::string& name)
   check_run(name + " default", m, l.bhd, p, uv, status);
   const SMP::Stretch_minimizing_report r = p.report();
   SMP_CHECK(r.history.size() >= 3, name << ": U^1 already rejected");
-  if(r.history.size() >= 2)
-    SMP_CHECK(r.history[1].l2_stretch < r.history[0].l2_stretch, name << ": U^1 not below U^0");
+  if(r.history.size() < 2)
+    return; // what follows compares with U^1
+  SMP_CHECK(r.history[1].l2_stretch < r.history[0].l2_stretch, name << ": U^1 not below U^0");
   SMP_CHECK(r.stop == SMP::Stretch_minimizing_stop::STRETCH_INCREASED, name << ": stopped for another reason");
   SMP_CHECK(r.interior_vertices + r.border_vertices == num_vertices(m), name << ": vertex counts");
   std::cout << name << ": U^0 " << r.history[0].l2_stretch << "  U^1 " << r.history[1].l2_stretch
@@ -303,6 +304,14 @@ void check_large_system()
   SMP_CHECK(max_distance(m, uv1, uv2) == 0., "a second call differs by " << max_distance(m, uv1, uv2));
   std::cout << "207k vertices: U^1 " << p.report().kept().l2_stretch << ", SparseLU " << reference.report().kept().l2_stretch
             << ", max distance " << max_distance(m, uv1, uvr) << std::endl;
+
+  // a plain Eigen::UmfPackLU given by the user, as the class documentation offers
+  typedef CGAL::Eigen_solver_traits<Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > Plain_umfpack;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Plain_umfpack>
+    plain(SMP::Shape_preserving_parameterizer_3<Mesh>(), SMP::parameters::number_of_iterations(1));
+  UV_map uvp = new_uv(m, "v:uv_plain");
+  check_run("207k vertices, plain UmfPackLU", m, l.bhd, plain, uvp, SMP::parameterize(m, plain, l.bhd, uvp));
+  SMP_CHECK(max_distance(m, uvp, uvr) < 1e-9, "plain UmfPackLU and SparseLU differ by " << max_distance(m, uvp, uvr));
 }
 #endif
 
@@ -416,6 +425,18 @@ void check_natural_border()
   run("mesh_with_border.off", 1.05);
   run("mushroom.off", 1.27588 - 0.01); // below the square border's U^opt (1.2759)
   run("mannequin-devil.off", 1.6);     // LSCM flips ~4000 faces inside, but its border is simple
+
+  // a null or an interior halfedge is a wrong parameter, as for the stretch minimizer
+  {
+    Loaded l = load("mushroom.off");
+    UV_map uv = new_uv(l.mesh, "v:uv");
+    auto vpmap = l.mesh.add_property_map<vertex_descriptor, bool>("v:done", false).first;
+    Natural natural;
+    SMP_CHECK(natural.parameterize(l.mesh, halfedge_descriptor(), uv, get(CGAL::vertex_index, l.mesh), vpmap) ==
+              SMP::ERROR_WRONG_PARAMETER, "natural border, null halfedge: " << natural.why());
+    SMP_CHECK(natural.parameterize(l.mesh, opposite(l.bhd, l.mesh), uv, get(CGAL::vertex_index, l.mesh), vpmap) ==
+              SMP::ERROR_WRONG_PARAMETER, "natural border, interior halfedge: " << natural.why());
+  }
 
   // three_peaks: LSCM folds the border over itself: an error, and no interior written
   Loaded l = load("three_peaks.off");

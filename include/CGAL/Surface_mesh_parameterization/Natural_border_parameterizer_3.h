@@ -92,7 +92,8 @@ public:
   /// \param uvmap receives the position in the plane of every vertex of the border
   /// \param vpmap receives `true` for every vertex of the border
   ///
-  /// \returns `OK`, the error of the free-border parameterizer, or `ERROR_NO_1_TO_1_MAPPING` if
+  /// \returns `OK`, `ERROR_WRONG_PARAMETER` if `bhd` is not a border halfedge, the error of the
+  /// free-border parameterizer, or `ERROR_NO_1_TO_1_MAPPING` if
   /// the border it gives is not a simple polygon (`why()` tells which).
   template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
   Error_code parameterize(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVMap uvmap,
@@ -103,7 +104,7 @@ public:
     m_free_flips = 0;
     if(bhd == halfedge_descriptor() || !is_border(bhd, mesh)) {
       m_why = "no border halfedge";
-      return ERROR_BORDER_TOO_SHORT;
+      return ERROR_WRONG_PARAMETER;
     }
     // the free-border method numbers the vertices of the component from 0: give it a
     // numbering of its own (the caller's may cover other components or isolated vertices)

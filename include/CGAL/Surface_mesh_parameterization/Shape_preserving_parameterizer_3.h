@@ -14,6 +14,7 @@
 
 #include <Eigen/SparseLU>
 
+#include <limits>
 #include <vector>
 
 namespace CGAL {

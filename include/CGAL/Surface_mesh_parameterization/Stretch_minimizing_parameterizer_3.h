@@ -18,7 +18,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Weighted_laplacian_system.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
-#include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
 
 #include <CGAL/Default.h>
@@ -146,7 +146,7 @@ public:
   typedef typename boost::graph_traits<Triangle_mesh>::halfedge_descriptor halfedge_descriptor;
 
   /// Default cap on the number of reweighting steps (the named parameter `number_of_iterations`).
-  static constexpr unsigned int default_number_of_iterations = 20;
+  static constexpr unsigned int default_number_of_iterations = internal::default_max_iterations;
 
   /// Builds the paper's method: \f$ \eta = 1 \f$, stop when the stretch increases, at most
   /// `default_number_of_iterations` steps.

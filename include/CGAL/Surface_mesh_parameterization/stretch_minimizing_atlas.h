@@ -9,7 +9,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
-#include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -87,10 +87,12 @@ struct Atlas
 namespace internal {
 
 // Tells the two versions of make_atlas() apart: the third argument of the soup's is a sequence
-// of named parameters, the mesh's a property map.
-template <typename T> struct Is_named_parameters : std::false_type {};
+// of named parameters (CGAL's or the package's, which derive from CGAL's), the mesh's a property map.
 template <typename T, typename Tag, typename Base>
-struct Is_named_parameters<CGAL::Named_function_parameters<T, Tag, Base> > : std::true_type {};
+std::true_type is_named_parameters(const CGAL::Named_function_parameters<T, Tag, Base>*);
+std::false_type is_named_parameters(...);
+template <typename T>
+struct Is_named_parameters : decltype(is_named_parameters(static_cast<const T*>(nullptr))) {};
 
 // The settings of make_atlas() read from named parameters.
 struct Atlas_settings

@@ -112,7 +112,8 @@ inline double sander_face_energy(const Eigen::Matrix2d& J, double area, double m
 // f = area / 2 (1 / s1^2 + 1 / s2^2) + mu area s1 s2. Its Hessian then has the eigenvectors
 // (u2 v1^T - u1 v2^T) / sqrt 2 (twist), (u2 v1^T + u1 v2^T) / sqrt 2 (flip) and two
 // combinations of u1 v1^T and u2 v2^T given by the 2x2 Hessian of f in (s1, s2); the twist
-// eigenvalue is negative (rotating a face shrinks its stretch), which is what the clamp removes.
+// eigenvalue (df/ds1 + df/ds2) / (s1 + s2) is negative wherever f falls as the singular values
+// grow (as its stretch term does), which is what the clamp removes.
 // \pre det(J) > 0
 inline Eigen::Matrix4d sander_face_projected_hessian(const Eigen::Matrix2d& J, double area, double mu, double ratio)
 {

@@ -6,7 +6,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_options.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Exposed_initializer.h>
-#include <CGAL/Surface_mesh_parameterization/internal/named_parameters.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -14,11 +14,14 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
+// The cap on the reweighting steps when `number_of_iterations` is not given.
+constexpr unsigned int default_max_iterations = 20;
+
 // Every option of the stretch minimizer, as read from named parameters.
 struct Stretch_minimizing_settings
 {
   double eta = 1.;
-  unsigned int max_iterations = 20;
+  unsigned int max_iterations = default_max_iterations;
   Start_weights start = Start_weights::INITIALIZER;
   Stretch_update update = Stretch_update::VERTEX;
   Step_rule rule = Step_rule::STOP_AT_INCREASE;

@@ -122,8 +122,8 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     // SuiteSparse's solvers (through a multithreaded BLAS) made results vary from run to run
     typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Solver;
     typedef Shape_preserving_parameterizer_3<Mesh, Circular_border_arc_length_parameterizer_3<Mesh>, Solver> Initial;
-    Stretch_minimizing_parameterizer_3<Mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH,
-        P::polish_iterations(settings.polish_iterations, P::free_border(true, P::number_of_threads(1u)))));
+    Stretch_minimizing_parameterizer_3<Mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
+        .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u));
     if(p.parameterize(sm, bhd, uvmap, vimap, vpmap) != OK)
       return;
     chart.uv.resize(vd.size());
