@@ -12,6 +12,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Stopping_rule.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Stretch_update_ratios.h>
 #include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
@@ -74,6 +75,29 @@ void check_ring_weights()
             "weights of a ring with a zero-area face");
   for(std::size_t k = 0; k < w.size(); ++k)
     SMP_CHECK(std::abs(w[k] - mv[k]) < 1e-15, "zero-area face: weight " << k << " is not the mean-value one");
+}
+
+// The stopping rule on its cases: an increase stops the paper's rule, and HALVE_ETA only once
+// eta cannot be halved above its floor; then the cap, then the visitor.
+void check_stopping_rule()
+{
+  typedef SMP::Stretch_minimizing_stop Stop;
+  SMPI::Stopping_rule paper;
+  paper.max_iterations = 5;
+  SMP_CHECK(paper(1, true, true, true, 1., true) == Stop::NOT_RUN, "a decrease goes on");
+  SMP_CHECK(paper(2, true, false, true, 1., true) == Stop::STRETCH_INCREASED, "an increase stops");
+  SMP_CHECK(paper(2, false, false, true, 1., true) == Stop::FLIPPED_FACES, "a flipped step stops");
+  SMP_CHECK(paper(0, false, false, false, 1., true) == Stop::FLIPPED_FACES, "no valid step");
+  SMP_CHECK(paper(5, true, true, true, 1., true) == Stop::ITERATION_CAP, "the cap");
+  SMP_CHECK(paper(3, true, true, true, 1., false) == Stop::VISITOR, "the visitor");
+  SMPI::Stopping_rule halve = paper;
+  halve.rule = SMP::Step_rule::HALVE_ETA;
+  halve.eta_floor = 0.25;
+  SMP_CHECK(halve(2, true, false, true, 1., true) == Stop::NOT_RUN, "HALVE_ETA: eta 1 is halved");
+  SMP_CHECK(halve(3, true, false, true, 0.5, true) == Stop::NOT_RUN, "HALVE_ETA: eta 0.5 is halved");
+  SMP_CHECK(halve(4, true, false, true, 0.25, true) == Stop::STRETCH_INCREASED, "HALVE_ETA: eta at the floor stops");
+  SMP_CHECK(SMPI::Stopping_rule::lowers(1. - 1e-6, 1.) && !SMPI::Stopping_rule::lowers(1. - 1e-13, 1.) &&
+            !SMPI::Stopping_rule::lowers(1., 1.), "a decrease at the level of rounding is no decrease");
 }
 
 // A planar grid mapped by a linear map: every face has the same stretch, so every update
@@ -370,6 +394,7 @@ void check_polish(const std::string& name)
 int main()
 {
   check_ring_weights();
+  check_stopping_rule();
   check_update_ratios_of_a_linear_map();
   // LOWEST_STRETCH is below PAPER on every bundled disk (its reweighting alone was not on the
   // nearly flat mesh_with_border and on holes: the descent steps make the difference there)

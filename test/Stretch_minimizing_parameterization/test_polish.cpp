@@ -689,7 +689,8 @@ void test_flat_slivers()
 
   SMP::Stretch_minimizing_parameterizer_3<Mesh> fixed(P::polish_iterations(20u, P::descent_iterations(30u)));
   SMP_CHECK(SMP::parameterize(mesh, fixed, bhd, uvmap) == SMP::OK, "slivers: " << fixed.report().message);
-  const SMP::Stretch_minimizing_polish& pol = fixed.report().polish;
+  const SMP::Stretch_minimizing_report fixed_report = fixed.report();
+  const SMP::Stretch_minimizing_polish& pol = fixed_report.polish;
   SMP_CHECK(pol.ran() && pol.message.empty(), "slivers: the polish did not run: " << pol.message);
   SMP_CHECK(std::abs(pol.l2_before - l2_uopt) < 1e-12, "slivers: l2_before " << pol.l2_before << " is not U^opt's " << l2_uopt);
   SMP_CHECK(pol.l2_after < 0.99 * l2_uopt, "slivers: fixed border L2 " << pol.l2_after << " vs U^opt " << l2_uopt);

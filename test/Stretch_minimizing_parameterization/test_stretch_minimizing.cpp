@@ -29,6 +29,7 @@
 #include <cmath>
 #include <functional>
 #include <string>
+#include <thread>
 #include <vector>
 
 typedef CGAL::Simple_cartesian<double>      Kernel;
@@ -266,8 +267,9 @@ void check_threads()
     check_run("52k vertices, 1 thread", m, l.bhd, one, uv1, SMP::parameterize(m, one, l.bhd, uv1));
     check_run("52k vertices, 3 threads", m, l.bhd, three, uv3, SMP::parameterize(m, three, l.bhd, uv3));
     SMP_CHECK(max_distance(m, uv1, uv3) == 0., "3 threads differ from 1 by " << max_distance(m, uv1, uv3));
-    const auto& h1 = one.report().history;
-    const auto& h3 = three.report().history;
+    const SMP::Stretch_minimizing_report r1 = one.report(), r3 = three.report();
+    const auto& h1 = r1.history;
+    const auto& h3 = r3.history;
     SMP_CHECK(h1.size() == h3.size(), "3 threads made " << h3.size() << " steps, 1 thread " << h1.size());
     for(std::size_t h = 0; h < h1.size() && h < h3.size(); ++h)
       SMP_CHECK(h1[h].l2_stretch == h3[h].l2_stretch && h1[h].eta == h3[h].eta, "step " << h << " differs");
@@ -276,6 +278,39 @@ void check_threads()
               "the polish differs: " << one.report().l2_stretch() << " vs " << three.report().l2_stretch());
     m.remove_property_map(uv1);
     m.remove_property_map(uv3);
+  }
+}
+
+// Copies of one parameterizer called on two threads at once (CGAL's free parameterize() copies
+// it, and the copies share the solver): each call gives its own map, and the report they share
+// is the whole report of one of the two calls. (With the solver shared unguarded, UMFPACK
+// crashed here.)
+void check_concurrent_copies()
+{
+  Loaded a = load("mushroom.off"), b = load("three_peaks.off");
+  Default_smp p(SMP::parameters::number_of_threads(1));
+  UV_map uva = new_uv(a.mesh, "v:uv"), uvb = new_uv(b.mesh, "v:uv");
+  SMP_CHECK(SMP::parameterize(a.mesh, p, a.bhd, uva) == SMP::OK, "mushroom alone");
+  const SMP::Stretch_minimizing_report ra = p.report();
+  SMP_CHECK(SMP::parameterize(b.mesh, p, b.bhd, uvb) == SMP::OK, "three_peaks alone");
+  const SMP::Stretch_minimizing_report rb = p.report();
+  auto same = [](const SMP::Stretch_minimizing_report& x, const SMP::Stretch_minimizing_report& y) {
+    return x.status == y.status && x.faces == y.faces && x.history.size() == y.history.size() &&
+           x.kept_step == y.kept_step && x.l2_stretch() == y.l2_stretch();
+  };
+  SMP_CHECK(!same(ra, rb), "the two meshes should give two reports");
+  for(int run = 0; run < 4; ++run) {
+    SMP::Error_code ea = SMP::ERROR_EMPTY_MESH, eb = SMP::ERROR_EMPTY_MESH;
+    std::thread ta([&] { ea = SMP::parameterize(a.mesh, p, a.bhd, uva); });
+    std::thread tb([&] { eb = SMP::parameterize(b.mesh, p, b.bhd, uvb); });
+    ta.join();
+    tb.join();
+    const SMP::Stretch_minimizing_report r = p.report();
+    SMP_CHECK(ea == SMP::OK && eb == SMP::OK, "concurrent copies failed");
+    SMP_CHECK(same(r, ra) || same(r, rb), "the shared report mixes two calls");
+    SMP_CHECK(std::abs(SMP::compute_stretch_statistics(a.mesh, uva).l2_stretch - ra.l2_stretch()) < 1e-9 &&
+              std::abs(SMP::compute_stretch_statistics(b.mesh, uvb).l2_stretch - rb.l2_stretch()) < 1e-9,
+              "a map differs from its call alone");
   }
 }
 
@@ -471,6 +506,7 @@ int main()
   check_options_and_visitor();
   check_parallel_for();
   check_threads();
+  check_concurrent_copies();
 #if defined(CGAL_SMP_USE_UMFPACK)
   check_large_system();
 #endif

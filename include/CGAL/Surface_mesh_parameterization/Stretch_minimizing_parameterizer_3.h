@@ -4,6 +4,10 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_PARAMETERIZER_3_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_PARAMETERIZER_3_H
 
+// The package's main class. Longer than most headers because it is the reference documentation
+// of the method and of its options (about half of its lines); the iteration's parts (weights,
+// stretch, solver, polish) live in internal headers.
+
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
@@ -13,6 +17,8 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Exposed_initializer.h>
 #include <CGAL/Surface_mesh_parameterization/internal/polish_stage.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Shared_report.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Stopping_rule.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Stretch_minimizing_settings.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Stretch_update_ratios.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Weighted_laplacian_system.h>
@@ -33,6 +39,7 @@
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
@@ -78,8 +85,11 @@ namespace Surface_mesh_parameterization {
 /// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`
 /// copies the parameterizer, so options travel inside it) or to `parameterize()` for one call.
 /// After a call, `report()` tells the stretch of every step, the step kept and why the
-/// iteration ended; copies of a parameterizer share that report, so it can be read after
-/// `CGAL::Surface_mesh_parameterization::parameterize()` too.
+/// iteration ended. Copies of a parameterizer share that report, so it can be read after
+/// `CGAL::Surface_mesh_parameterization::parameterize()` too. Copies also share the sparse
+/// solver (`CGAL::Eigen_solver_traits` holds it by a shared pointer): calls on copies made on
+/// several threads are safe but run one at a time, and the report is the one of the call that
+/// ended last. To parameterize on several threads at once, construct a parameterizer per thread.
 ///
 /// \cgalModels `Parameterizer_3`
 ///
@@ -155,7 +165,8 @@ public:
   explicit Stretch_minimizing_parameterizer_3(const Initial_parameterizer& initializer = Initial_parameterizer(),
                                               const Solver_traits& solver_traits = Solver_traits())
     : m_initializer(initializer), m_solver_traits(solver_traits),
-      m_report(std::make_shared<Stretch_minimizing_report>())
+      m_report(std::make_shared<internal::Shared_report<Stretch_minimizing_report> >()),
+      m_solver_mutex(std::make_shared<std::mutex>())
   { }
 
   /// Builds the method with options, from a default-constructed initial parameterizer.
@@ -315,9 +326,9 @@ public:
     return run(mesh, bhd, uvmap, vimap, vpmap, internal::read_settings(np, m_settings));
   }
 
-  /// The outcome of the last call of `parameterize()` on this object or a copy of it
+  /// The outcome of the last call of `parameterize()` to end on this object or a copy of it
   /// (`CGAL::Surface_mesh_parameterization::parameterize()` calls a copy).
-  const Stretch_minimizing_report& report() const { return *m_report; }
+  Stretch_minimizing_report report() const { return m_report->read(); }
 
   /// The exponent \f$ \eta \f$ given to the constructor.
   double eta() const { return m_settings.eta; }
@@ -334,10 +345,24 @@ private:
                  VertexIndexMap vimap, VertexParameterizedMap vpmap,
                  const internal::Stretch_minimizing_settings& settings)
   {
+    Stretch_minimizing_report rep;
+    Error_code status;
+    {
+      // copies share the solver (CGAL's Eigen_solver_traits holds it by a shared pointer)
+      std::lock_guard<std::mutex> lock(*m_solver_mutex);
+      status = run(mesh, bhd, uvmap, vimap, vpmap, settings, rep);
+    }
+    m_report->publish(std::move(rep));
+    return status;
+  }
+
+  template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code run(Triangle_mesh& mesh, halfedge_descriptor bhd, VertexUVmap uvmap,
+                 VertexIndexMap vimap, VertexParameterizedMap vpmap,
+                 const internal::Stretch_minimizing_settings& settings, Stretch_minimizing_report& rep)
+  {
     typedef typename boost::property_traits<VertexUVmap>::value_type Point_2;
     const auto start = std::chrono::steady_clock::now();
-    Stretch_minimizing_report& rep = *m_report;
-    rep = Stretch_minimizing_report();
     auto fail = [&rep](Error_code e, const std::string& why) {
       rep.status = e;
       rep.message = why;
@@ -378,7 +403,7 @@ private:
                   "(degenerate faces, e.g. zero-length edges, around it)");
 
     std::vector<internal::Vec2> best_uv;
-    const bool solved = iterate(dc, settings, start, w, uv, best_uv);
+    const bool solved = iterate(dc, settings, start, w, uv, best_uv, rep);
     internal::release_factors(m_solver_traits.solver());
     if(!solved)
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
@@ -400,18 +425,20 @@ private:
                const internal::Stretch_minimizing_settings& settings,
                std::chrono::steady_clock::time_point start,
                std::vector<double>& w, std::vector<internal::Vec2>& uv,
-               std::vector<internal::Vec2>& best_uv)
+               std::vector<internal::Vec2>& best_uv, Stretch_minimizing_report& rep)
   {
-    Stretch_minimizing_report& rep = *m_report;
     internal::Weighted_laplacian_system<Solver_traits> system(dc);
     internal::Flat_stretch stretch;
     internal::Stretch_update_ratios ratios;
     ratios.init(settings.update, dc);
     std::vector<double> w_kept; // the weights of the kept step, to step again from it (HALVE_ETA)
     const bool halving = settings.rule == Step_rule::HALVE_ETA;
+    internal::Stopping_rule stop_rule;
+    stop_rule.rule = settings.rule;
     // two halvings: further ones changed the stretch in the fourth digit at most, on the
     // bundled meshes and CGAL's sample meshes, for two more solves each time
-    const double eta_floor = settings.eta / 4.;
+    stop_rule.eta_floor = settings.eta / 4.;
+    stop_rule.max_iterations = settings.max_iterations;
     double eta = settings.eta;
     const unsigned int threads = internal::thread_count(settings.threads);
     for(std::size_t h = 0;; ++h) {
@@ -430,9 +457,8 @@ private:
                   << s.degenerate_uv << "  " << step.seconds << " s" << std::endl;
 
       const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;
-      // a decrease at the level of rounding is no decrease: it would only prolong the iteration
       const bool better = valid && (best_uv.empty() ||
-                                    s.l2 < rep.history[rep.kept_step].l2_stretch * (1. - 1e-10));
+                                    internal::Stopping_rule::lowers(s.l2, rep.history[rep.kept_step].l2_stretch));
       if(better) {
         rep.kept_step = h;
         best_uv = uv;
@@ -440,14 +466,7 @@ private:
           w_kept = w;
       }
       const bool go_on = settings.visitor ? settings.visitor(step) : true;
-      if(best_uv.empty())
-        rep.stop = Stretch_minimizing_stop::FLIPPED_FACES;
-      else if(!better && (!halving || eta / 2. < eta_floor))
-        rep.stop = valid ? Stretch_minimizing_stop::STRETCH_INCREASED : Stretch_minimizing_stop::FLIPPED_FACES;
-      else if(h >= settings.max_iterations)
-        rep.stop = Stretch_minimizing_stop::ITERATION_CAP;
-      else if(!go_on)
-        rep.stop = Stretch_minimizing_stop::VISITOR;
+      rep.stop = stop_rule(h, valid, better, !best_uv.empty(), eta, go_on);
       if(rep.stop != Stretch_minimizing_stop::NOT_RUN)
         return true;
 
@@ -511,7 +530,8 @@ private:
   internal::Exposed_initializer<Initial_parameterizer> m_initializer;
   Solver_traits m_solver_traits;
   internal::Stretch_minimizing_settings m_settings;
-  std::shared_ptr<Stretch_minimizing_report> m_report; // shared by copies, see the class comment
+  std::shared_ptr<internal::Shared_report<Stretch_minimizing_report> > m_report; // shared by copies, see the class comment
+  std::shared_ptr<std::mutex> m_solver_mutex; // held by a call: copies share m_solver_traits' solver
 };
 
 } // namespace Surface_mesh_parameterization

@@ -6,6 +6,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 
+#include <CGAL/Kernel/global_functions.h>
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

@@ -4,6 +4,7 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MEASURES_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MEASURES_H
 
+#include <CGAL/Surface_mesh_parameterization/Face_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -19,20 +20,6 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
-
-/// \ingroup PkgStretchMinimizingParameterizationRef
-/// Stretch of the affine map \f$ S \f$ from a parameter triangle to its 3D triangle
-/// (Sander, Snyder, Gortler, Hoppe 2001 \cgalCite{cgal:ssgh-tmpm-01}). With \f$ a = S_s \cdot S_s \f$,
-/// \f$ b = S_s \cdot S_t \f$, \f$ c = S_t \cdot S_t \f$:
-/// \f$ L^2 = \sqrt{(a + c) / 2} \f$ and \f$ L^\infty = \sqrt{((a + c) + \sqrt{(a - c)^2 + 4 b^2}) / 2} \f$.
-/// Both are infinite when the parameter triangle has zero area.
-struct Face_stretch
-{
-  double l2 = 0.;      ///< root mean square of the singular values of \f$ S \f$
-  double linf = 0.;    ///< largest singular value of \f$ S \f$
-  double area_3d = 0.; ///< area of the 3D triangle
-  double area_uv = 0.; ///< signed area of the parameter triangle (positive if counterclockwise)
-};
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// Measures of a whole parameterization, as in the tables of Yoshizawa et al. (2004).
@@ -66,13 +53,7 @@ Face_stretch face_stretch(const Point_3& p1, const Point_3& p2, const Point_3& p
     return internal::Vec3{CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z())};
   };
   auto q = [](const Point_2& x) { return internal::Vec2{CGAL::to_double(x.x()), CGAL::to_double(x.y())}; };
-  const internal::Triangle_stretch t = internal::triangle_stretch(p(p1), p(p2), p(p3), q(q1), q(q2), q(q3));
-  Face_stretch r;
-  r.l2 = t.l2;
-  r.linf = t.linf;
-  r.area_3d = t.area_3d;
-  r.area_uv = t.area_uv;
-  return r;
+  return internal::triangle_stretch(p(p1), p(p2), p(p3), q(q1), q(q2), q(q3));
 }
 
 namespace internal {
@@ -114,6 +95,24 @@ void flatten(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uv
   }
 }
 
+// The faces of `face_range` flattened and their stretch evaluated: what every measure starts from.
+template <typename TriangleMesh>
+struct Measured_faces
+{
+  Flat_triangles flat;
+  std::vector<Vec2> uv;
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertices; // by local index
+  Flat_stretch stretch;
+  Flat_stretch_summary summary;
+
+  template <typename FaceRange, typename VertexUVMap, typename NamedParameters>
+  Measured_faces(const FaceRange& face_range, const TriangleMesh& tm, VertexUVMap uvmap, const NamedParameters& np)
+  {
+    flatten(face_range, tm, uvmap, np, flat, uv, vertices);
+    summary = stretch.evaluate(flat, uv);
+  }
+};
+
 } // namespace internal
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -147,21 +146,16 @@ Stretch_statistics compute_stretch_statistics(const FaceRange& face_range, const
                                               VertexUVMap uvmap,
                                               const Named_function_parameters<T, Tag, Base>& np = parameters::default_values())
 {
-  internal::Flat_triangles flat;
-  std::vector<internal::Vec2> uv;
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertices;
-  internal::flatten(face_range, tm, uvmap, np, flat, uv, vertices);
-
-  internal::Flat_stretch stretch;
-  const internal::Flat_stretch_summary s = stretch.evaluate(flat, uv);
-  const internal::Flat_distortions d = internal::flat_distortions(flat, uv, stretch);
+  const internal::Measured_faces<TriangleMesh> m(face_range, tm, uvmap, np);
+  const internal::Flat_stretch_summary& s = m.summary;
+  const internal::Flat_distortions d = internal::flat_distortions(m.flat, m.uv, m.stretch);
   Stretch_statistics r;
   r.l2_stretch = s.l2;
   r.linf_stretch = s.linf;
   r.edge_distortion = d.edge;
   r.angle_distortion = d.angle;
   r.area_distortion = d.area;
-  r.number_of_faces = flat.tri.size();
+  r.number_of_faces = m.flat.tri.size();
   r.flipped_faces = s.flipped;
   r.degenerate_uv_faces = s.degenerate_uv;
   r.degenerate_3d_faces = s.degenerate_3d;
@@ -227,18 +221,12 @@ void compute_vertex_stretch(const FaceRange& face_range, const TriangleMesh& tm,
                             VertexStretchMap vertex_stretch_map,
                             const NamedParameters& np = parameters::default_values())
 {
-  internal::Flat_triangles flat;
-  std::vector<internal::Vec2> uv;
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> vertices;
-  internal::flatten(face_range, tm, uvmap, np, flat, uv, vertices);
-
-  internal::Flat_stretch stretch;
-  const internal::Flat_stretch_summary s = stretch.evaluate(flat, uv);
+  const internal::Measured_faces<TriangleMesh> m(face_range, tm, uvmap, np);
   std::vector<double> sigma;
-  stretch.vertex_stretch(flat, 0., sigma);
-  const double normalization = s.rms > 0. ? s.l2 / s.rms : 0.;
-  for(std::size_t v = 0; v < vertices.size(); ++v)
-    put(vertex_stretch_map, vertices[v], sigma[v] * normalization);
+  m.stretch.vertex_stretch(m.flat, 0., sigma);
+  const double normalization = m.summary.rms > 0. ? m.summary.l2 / m.summary.rms : 0.;
+  for(std::size_t v = 0; v < m.vertices.size(); ++v)
+    put(vertex_stretch_map, m.vertices[v], sigma[v] * normalization);
 }
 
 } // namespace Surface_mesh_parameterization

@@ -23,19 +23,19 @@
 //
 // What it does not do: it does not change the connectivity, it does not move a vertex that is in
 // no energy face (e.g. the centre of a fan closing a hole), and it stops at a local minimum.
+//
+// Longer than most headers: one class, whose driver, setup, assembly and line search share the
+// state of one polish. The energy of one face, the bounds of a flip-free step and the proxy's
+// solver are in headers of their own.
 
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_face_energy.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flip_free_step.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_proxy_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Intersections_2/Segment_2_Segment_2.h>
-#include <CGAL/box_intersection_d.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
-#if defined(CGAL_SMP_USE_CHOLMOD)
-#include <Eigen/CholmodSupport>
-#endif
 
 #include <algorithm>
 #include <chrono>
@@ -49,114 +49,6 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
-
-// ---------------------------------------------------------------------------------------------
-// One face
-
-// The linear map from the uv corners of a face to its Jacobian, J = [q1 q2 q3] * D (2x3 times
-// 3x2): the rows of D are the gradients of the barycentric coordinates in a 2D frame of the 3D
-// triangle. `area` is the 3D area.
-struct Sander_face_operator
-{
-  Eigen::Matrix<double, 3, 2> D;
-  double area = 0.;
-};
-
-inline Sander_face_operator sander_face_operator(const Vec3& p1, const Vec3& p2, const Vec3& p3)
-{
-  // frame: p1 at the origin, p2 on the x axis, p3 above it
-  const Vec3 e1 = sub3(p2, p1), e2 = sub3(p3, p1);
-  const double l = norm3(e1);
-  const double x3 = dot3(e1, e2) / l, y3 = norm3(cross3(e1, e2)) / l;
-  Eigen::Matrix2d M; // inverse of the edge matrix [[l, x3], [0, y3]]
-  M << 1. / l, -x3 / (l * y3),
-       0.,      1. / y3;
-  Sander_face_operator op;
-  op.D.row(0) = -(M.row(0) + M.row(1));
-  op.D.row(1) = M.row(0);
-  op.D.row(2) = M.row(1);
-  op.area = 0.5 * l * y3;
-  return op;
-}
-
-// f(J) = area / 2 * ||J||_F^2 / det(J)^2 + mu * area * det(J), the energy of one face, with its
-// gradient and Hessian with respect to vec(J) = (J00, J01, J10, J11) when asked.
-// \pre det(J) > 0
-inline double sander_face_energy(const Eigen::Matrix2d& J, double area, double mu,
-                                 Eigen::Vector4d* gradient = nullptr, Eigen::Matrix4d* hessian = nullptr)
-{
-  const Eigen::Vector4d j(J(0, 0), J(0, 1), J(1, 0), J(1, 1));
-  const Eigen::Vector4d c(J(1, 1), -J(1, 0), -J(0, 1), J(0, 0)); // d det / d vec(J): cofactors
-  const double n = j.squaredNorm();
-  const double d = J(0, 0) * J(1, 1) - J(0, 1) * J(1, 0);
-  const double h = 0.5 * area, id = 1. / d, hid2 = h * id * id;
-  if(gradient)
-    *gradient = hid2 * (2. * j - (2. * n * id) * c) + (mu * area) * c;
-  if(hessian) {
-    Eigen::Matrix4d& H = *hessian;
-    H.noalias() = (6. * n * id * id) * (c * c.transpose()) - (4. * id) * (j * c.transpose() + c * j.transpose());
-    H.diagonal().array() += 2.;
-    H *= hid2;
-    // the Hessian of det is constant: 1 at (0, 3), -1 at (1, 2), symmetric
-    const double k = mu * area - 2. * n * id * hid2;
-    H(0, 3) += k; H(3, 0) += k;
-    H(1, 2) -= k; H(2, 1) -= k;
-  }
-  return hid2 * n + mu * area * d;
-}
-
-// The Hessian of sander_face_energy() with its eigenvalues clamped from below to `ratio`
-// times the largest one, so that every face contributes a convex quadratic model.
-//
-// f depends on the singular values of J = s1 u1 v1^T + s2 u2 v2^T only (s1 s2 = det J > 0):
-// f = area / 2 (1 / s1^2 + 1 / s2^2) + mu area s1 s2. Its Hessian then has the eigenvectors
-// (u2 v1^T - u1 v2^T) / sqrt 2 (twist), (u2 v1^T + u1 v2^T) / sqrt 2 (flip) and two
-// combinations of u1 v1^T and u2 v2^T given by the 2x2 Hessian of f in (s1, s2); the twist
-// eigenvalue (df/ds1 + df/ds2) / (s1 + s2) is negative wherever f falls as the singular values
-// grow (as its stretch term does), which is what the clamp removes.
-// \pre det(J) > 0
-inline Eigen::Matrix4d sander_face_projected_hessian(const Eigen::Matrix2d& J, double area, double mu, double ratio)
-{
-  // right singular vectors: the eigenvectors of J^T J
-  const Eigen::Matrix2d JtJ = J.transpose() * J;
-  const double theta = 0.5 * std::atan2(2. * JtJ(0, 1), JtJ(0, 0) - JtJ(1, 1));
-  const Eigen::Vector2d v1(std::cos(theta), std::sin(theta)), v2(-v1(1), v1(0));
-  const double d = J.determinant(), n = JtJ.trace();
-  const double half_gap = 0.5 * (JtJ(0, 0) - JtJ(1, 1));
-  const double s1 = std::sqrt(0.5 * n + std::sqrt(half_gap * half_gap + JtJ(0, 1) * JtJ(0, 1)));
-  const double s2 = d / s1; // accurate where s2^2 from the eigenvalues would cancel
-  const Eigen::Vector2d u1 = J * v1 / s1, u2 = J * v2 / s2;
-  auto vec = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { // vec(a b^T), row-major
-    return Eigen::Vector4d(a(0) * b(0), a(0) * b(1), a(1) * b(0), a(1) * b(1));
-  };
-  const Eigen::Vector4d d1 = vec(u1, v1), d2 = vec(u2, v2);
-  const Eigen::Vector4d twist = (vec(u2, v1) - vec(u1, v2)) / std::sqrt(2.);
-  const Eigen::Vector4d flip = (vec(u2, v1) + vec(u1, v2)) / std::sqrt(2.);
-
-  const double h = 0.5 * area, id = 1. / d;
-  Eigen::Matrix2d S; // Hessian in (s1, s2)
-  S << 6. * h / (s1 * s1 * s1 * s1), mu * area,
-       mu * area,                    6. * h / (s2 * s2 * s2 * s2);
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
-  es.computeDirect(S);
-  const double l_twist = 2. * h * id * id * (1. - n * id) + mu * area;
-  const double l_flip = 2. * h * id * id * (1. + n * id) - mu * area;
-
-  const double largest = (std::max)({es.eigenvalues()(1), l_twist, l_flip});
-  const double floor = ratio * (std::max)(largest, (std::numeric_limits<double>::min)());
-  Eigen::Matrix4d H;
-  Eigen::Vector4d e;
-  H.noalias() = (std::max)(l_twist, floor) * (twist * twist.transpose());
-  H.noalias() += (std::max)(l_flip, floor) * (flip * flip.transpose());
-  for(int k = 0; k < 2; ++k) {
-    e = es.eigenvectors()(0, k) * d1 + es.eigenvectors()(1, k) * d2;
-    H.noalias() += (std::max)(es.eigenvalues()(k), floor) * (e * e.transpose());
-  }
-  return H;
-}
-
-// ---------------------------------------------------------------------------------------------
-// The polisher
 
 // How a step finds its direction.
 enum class Sander_polish_direction { NEWTON, DIRICHLET_PROXY };
@@ -203,62 +95,10 @@ struct Sander_polish_result
   double seconds = 0.;
 };
 
-// CHOLMOD's supernodal LLT (Eigen's CholmodSupport) took 1.2 times, its simplicial LDLT 1.4
-// times the factorization time of SimplicialLDLT on the mannequin head's Newton system
-// (26k unknowns), so there is no SuiteSparse variant.
+// The Newton system changes at every step, and is as large as a chart or a disk: Eigen's
+// simplicial LDLT factors it about as fast as CHOLMOD's factorizations (measured on the
+// mannequin head), so there is no SuiteSparse variant.
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_polish_default_solver;
-
-// Factors the proxy once and solves it at every descent step: with Eigen's SimplicialLDLT, or,
-// when SuiteSparse is used and the proxy is large, with CHOLMOD's supernodal Cholesky (its
-// default ordering: AMD, and METIS too when AMD fills in much). For 30 descent steps on the
-// mannequin head CHOLMOD took 1.2 times SimplicialLDLT's time at 13k vertices, the same at 52k
-// and half at 207k.
-class Sander_proxy_solver
-{
-public:
-  typedef Eigen::SparseMatrix<double> Matrix;
-  static constexpr Eigen::Index supernodal_threshold = 100000;
-
-  void compute(const Matrix& lower)
-  {
-#if defined(CGAL_SMP_USE_CHOLMOD)
-    // a free border leaves the proxy singular (translations): CHOLMOD's LLT refuses it, where
-    // the LDLT factors it (the line search copes with the free translation)
-    m_supernodal = lower.rows() >= supernodal_threshold;
-    if(m_supernodal) {
-      m_large.cholmod().print = 0; // its failure is handled here, not printed
-      m_large.compute(lower);
-      if(m_large.info() == Eigen::Success)
-        return;
-      m_supernodal = false;
-    }
-#endif
-    m_small.compute(lower);
-  }
-
-  Eigen::ComputationInfo info() const
-  {
-#if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal) return m_large.info();
-#endif
-    return m_small.info();
-  }
-
-  Eigen::Matrix<double, Eigen::Dynamic, 2> solve(const Eigen::Matrix<double, Eigen::Dynamic, 2>& b) const
-  {
-#if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal) return m_large.solve(b);
-#endif
-    return m_small.solve(b);
-  }
-
-private:
-  Eigen::SimplicialLDLT<Matrix, Eigen::Lower> m_small;
-#if defined(CGAL_SMP_USE_CHOLMOD)
-  Eigen::CholmodSupernodalLLT<Matrix, Eigen::Lower> m_large;
-  bool m_supernodal = false;
-#endif
-};
 
 // `Solver`: an Eigen sparse Cholesky solver reading the lower triangle, of the Newton system;
 // `ProxySolver`: the same for the proxy, or a class with the interface of Sander_proxy_solver.
@@ -444,7 +284,7 @@ private:
     // positive: the orientation of the total signed uv area
     double signed_area = 0.;
     for(const Triangle& t : m.tri)
-      signed_area += cross(uv[t[0]], uv[t[1]], uv[t[2]]);
+      signed_area += twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]);
     if(!(signed_area != 0.))
       return refuse("the start has no uv area");
 
@@ -454,7 +294,7 @@ private:
     if(free_border) {
       std::vector<char> keep_fixed(nv, 0);
       for(const Triangle& t : m.tri)
-        if(fixed[t[0]] && fixed[t[1]] && fixed[t[2]] && cross(uv[t[0]], uv[t[1]], uv[t[2]]) == 0.)
+        if(fixed[t[0]] && fixed[t[1]] && fixed[t[2]] && twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]) == 0.)
           for(int v : t) keep_fixed[v] = 1;
       for(int v : border)
         if(!keep_fixed[v]) m_fixed[v] = 0;
@@ -475,7 +315,7 @@ private:
     std::vector<char> in_energy(nv, 0);
     auto keep = [&](const Triangle& t) { // false for a bad start
       const bool all_fixed = m_fixed[t[0]] && m_fixed[t[1]] && m_fixed[t[2]];
-      const double a = cross(m_x[t[0]], m_x[t[1]], m_x[t[2]]);
+      const double a = twice_signed_area(m_x[t[0]], m_x[t[1]], m_x[t[2]]);
       return all_fixed ? a >= 0. : a > 0.;
     };
     for(const Triangle& t : m.tri) {
@@ -488,7 +328,7 @@ private:
         continue;
       }
       m_energy.push_back(Energy_face{t, op.D, op.area});
-      m_area_uv += 0.5 * cross(m_x[t[0]], m_x[t[1]], m_x[t[2]]);
+      m_area_uv += 0.5 * twice_signed_area(m_x[t[0]], m_x[t[1]], m_x[t[2]]);
       for(int v : t) in_energy[v] = 1;
     }
     for(const Triangle& t : guard) {
@@ -502,7 +342,7 @@ private:
     if(free_border) {
       m_border.assign(border.begin(), border.end());
       m_trial = m_x;
-      if(!border_is_simple())
+      if(!m_simple(m_trial, m_border))
         return refuse("the border loop of the start is not simple");
     }
 
@@ -564,7 +404,7 @@ private:
   {
     double a = 0.;
     for(const Energy_face& f : m_energy)
-      a += 0.5 * cross(x[f.v[0]], x[f.v[1]], x[f.v[2]]);
+      a += 0.5 * twice_signed_area(x[f.v[0]], x[f.v[1]], x[f.v[2]]);
     return a;
   }
 
@@ -585,7 +425,7 @@ private:
     for(std::size_t v = 0; v < m_x.size(); ++v)
       m_trial[v] = {m_x[v][0] + t * m_dir[v][0], m_x[v][1] + t * m_dir[v][1]};
     for(const Triangle& g : m_guard)
-      if(!(cross(m_trial[g[0]], m_trial[g[1]], m_trial[g[2]]) > 0.))
+      if(!(twice_signed_area(m_trial[g[0]], m_trial[g[1]], m_trial[g[2]]) > 0.))
         return HUGE_VAL;
     double E = 0.;
     for(const Energy_face& f : m_energy) {
@@ -673,28 +513,8 @@ private:
   double max_step() const
   {
     double t_max = HUGE_VAL;
-    auto limit = [&](const Triangle& t) {
-      const Vec2 e1 = diff(m_x[t[1]], m_x[t[0]]), e2 = diff(m_x[t[2]], m_x[t[0]]);
-      const Vec2 d1 = diff(m_dir[t[1]], m_dir[t[0]]), d2 = diff(m_dir[t[2]], m_dir[t[0]]);
-      // det(t) = a t^2 + b t + c, c > 0
-      const double a = cross2(d1, d2), b = cross2(e1, d2) + cross2(d1, e2), c = cross2(e1, e2);
-      double root = HUGE_VAL;
-      if(a == 0.) {
-        if(b < 0.) root = -c / b;
-      } else {
-        const double disc = b * b - 4. * a * c;
-        if(disc >= 0.) {
-          // both roots without cancellation
-          const double q = -0.5 * (b + (b < 0. ? -1. : 1.) * std::sqrt(disc));
-          const double r1 = q / a, r2 = c / q;
-          if(r1 > 0.) root = (std::min)(root, r1);
-          if(r2 > 0.) root = (std::min)(root, r2);
-        }
-      }
-      t_max = (std::min)(t_max, root);
-    };
-    for(const Energy_face& f : m_energy) limit(f.v);
-    for(const Triangle& g : m_guard) limit(g);
+    for(const Energy_face& f : m_energy) t_max = (std::min)(t_max, first_fold(m_x, m_dir, f.v));
+    for(const Triangle& g : m_guard) t_max = (std::min)(t_max, first_fold(m_x, m_dir, g));
     return t_max;
   }
 
@@ -710,14 +530,14 @@ private:
       const double E_t = energy_at(t);
       if(!(E_t < E) || !(E_t <= E + 1e-4 * t * slope))
         continue;
-      if(free_border && !border_is_simple())
+      if(free_border && !m_simple(m_trial, m_border))
         continue;
       if(k > 0 || !extrapolate)
         return E_t;
       double best = E_t, t_best = t;
       for(double s = 2. * t; s <= 0.8 * t_max && s <= 1e6; s *= 2.) {
         const double E_s = energy_at(s);
-        if(!(E_s < best) || (free_border && !border_is_simple()))
+        if(!(E_s < best) || (free_border && !m_simple(m_trial, m_border)))
           break;
         best = E_s;
         t_best = s;
@@ -727,36 +547,6 @@ private:
       return best;
     }
     return E;
-  }
-
-  // Whether the border loop of m_trial is a simple polygon: candidate pairs of non-adjacent
-  // edges by their boxes, then an exact test (touching counts).
-  bool border_is_simple()
-  {
-    typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-    const std::size_t nb = m_border.size();
-    m_boxes.resize(nb);
-    for(std::size_t i = 0; i < nb; ++i) {
-      const Vec2& p = m_trial[m_border[i]];
-      const Vec2& q = m_trial[m_border[(i + 1) % nb]];
-      m_boxes[i] = Box(Bbox_2((std::min)(p[0], q[0]), (std::min)(p[1], q[1]),
-                              (std::max)(p[0], q[0]), (std::max)(p[1], q[1])), &m_border[i]);
-    }
-    m_boxes_copy.assign(m_boxes.begin(), m_boxes.end());
-    const int* base = m_border.data();
-    bool simple = true;
-    auto check = [&](const Box& a, const Box& b) {
-      if(!simple) return;
-      const std::size_t i = std::size_t(a.handle() - base), j = std::size_t(b.handle() - base);
-      if(i == j || (i + 1) % nb == j || (j + 1) % nb == i) return;
-      auto point = [&](std::size_t e) { const Vec2& p = m_trial[m_border[e % nb]]; return K::Point_2(p[0], p[1]); };
-      if(CGAL::do_intersect(K::Segment_2(point(i), point(i + 1)), K::Segment_2(point(j), point(j + 1))))
-        simple = false;
-    };
-    CGAL::box_intersection_d(m_boxes.begin(), m_boxes.end(), m_boxes_copy.begin(), m_boxes_copy.end(), check,
-                             Box_intersection_d::Box_traits_d<Box>(), 10, Box_intersection_d::CLOSED,
-                             Box_intersection_d::COMPLETE);
-    return simple;
   }
 
   // Writes x in the caller's orientation.
@@ -775,14 +565,9 @@ private:
     return Q * f.D;
   }
 
-  static Vec2 diff(const Vec2& a, const Vec2& b) { return {a[0] - b[0], a[1] - b[1]}; }
-  static double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
-  static double cross(const Vec2& a, const Vec2& b, const Vec2& c) { return cross2(diff(b, a), diff(c, a)); }
 
   // Row of coordinate r of vertex v in the system, -1 if it does not move.
   int index(int v, int r) const { return m_dof[v] < 0 ? -1 : 2 * m_dof[v] + r; }
-
-  typedef Box_intersection_d::Box_with_handle_d<double, 2, const int*, Box_intersection_d::ID_FROM_HANDLE> Box;
 
   std::vector<char> m_fixed;
   std::vector<Energy_face> m_energy;
@@ -792,7 +577,7 @@ private:
   std::size_t m_dofs = 0;
   std::vector<int> m_slot;                 // 36 per energy face: entry of m_H, -1 if none
   std::vector<Vec2> m_x, m_trial, m_dir, m_current;
-  std::vector<Box> m_boxes, m_boxes_copy;
+  Simple_loop_check m_simple;              // of the border, with a free border
   bool m_flip = false;                     // uv is mirrored (v -> -v) in m_x so that faces are positive
   double m_mu = 0., m_area_uv = 0.;
   bool m_area_term = false;

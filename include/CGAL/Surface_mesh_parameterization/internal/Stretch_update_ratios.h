@@ -97,7 +97,7 @@ private:
       const int f = m_edge_faces[2 * e + slot];
       if(f < 0 || !stretch.used(std::size_t(f)))
         continue;
-      const Triangle_stretch& t = stretch.faces()[std::size_t(f)];
+      const Face_stretch& t = stretch.faces()[std::size_t(f)];
       num += t.area_3d * t.l2 * t.l2;
       den += t.area_3d;
     }

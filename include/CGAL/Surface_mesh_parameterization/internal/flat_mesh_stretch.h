@@ -8,8 +8,9 @@
 // measures of stretch_measures.h both run on this form, so there is one implementation of
 // every formula.
 
+#include <CGAL/Surface_mesh_parameterization/Face_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
-#include <CGAL/Surface_mesh_parameterization/internal/shape_preserving_weights.h>
+#include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
 
 #include <algorithm>
 #include <array>
@@ -22,29 +23,21 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-using Vec2 = std::array<double, 2>;
 using Triangle = std::array<int, 3>;
-
-// Sander et al. (2001) stretch of the affine map from a parameter triangle to a 3D triangle.
-struct Triangle_stretch
-{
-  double l2 = 0.;      // sqrt((a + c) / 2)
-  double linf = 0.;    // largest singular value
-  double area_3d = 0.; // unsigned
-  double area_uv = 0.; // signed
-};
 
 inline double triangle_area(const Vec3& p1, const Vec3& p2, const Vec3& p3)
 {
   return 0.5 * norm3(cross3(sub3(p2, p1), sub3(p3, p1)));
 }
 
-inline Triangle_stretch triangle_stretch(const Vec3& p1, const Vec3& p2, const Vec3& p3,
-                                         const Vec2& q1, const Vec2& q2, const Vec2& q3)
+// Sander et al. (2001) stretch of the affine map from a parameter triangle to a 3D triangle
+// (the formulas are in Face_stretch's documentation).
+inline Face_stretch triangle_stretch(const Vec3& p1, const Vec3& p2, const Vec3& p3,
+                                     const Vec2& q1, const Vec2& q2, const Vec2& q3)
 {
-  Triangle_stretch r;
+  Face_stretch r;
   const double s1 = q1[0], t1 = q1[1], s2 = q2[0], t2 = q2[1], s3 = q3[0], t3 = q3[1];
-  r.area_uv = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1));
+  r.area_uv = 0.5 * twice_signed_area(q1, q2, q3);
   r.area_3d = triangle_area(p1, p2, p3);
   if(r.area_uv == 0.) {
     r.l2 = r.linf = HUGE_VAL;
@@ -102,7 +95,7 @@ public:
       }
     });
     double sum_a3 = 0., sum_a2 = 0.;
-    for(const Triangle_stretch& t : m_faces) {
+    for(const Face_stretch& t : m_faces) {
       if(std::isfinite(t.area_3d)) sum_a3 += t.area_3d;
       if(std::isfinite(t.area_uv)) sum_a2 += std::abs(t.area_uv);
     }
@@ -112,7 +105,7 @@ public:
     Flat_stretch_summary s;
     double signed_sum = 0.;
     for(std::size_t f = 0; f < nf; ++f) {
-      const Triangle_stretch& t = m_faces[f];
+      const Face_stretch& t = m_faces[f];
       if(!(t.area_3d > tol3)) { ++s.degenerate_3d; continue; }
       if(!(std::abs(t.area_uv) > tol2) || !std::isfinite(t.l2) || !std::isfinite(t.linf)) {
         ++s.degenerate_uv;
@@ -125,7 +118,7 @@ public:
     double a3 = 0., a2 = 0., e2 = 0., linf = 0.;
     for(std::size_t f = 0; f < nf; ++f) {
       if(!m_used[f]) continue;
-      const Triangle_stretch& t = m_faces[f];
+      const Face_stretch& t = m_faces[f];
       if((t.area_uv > 0.) != (signed_sum > 0.)) ++s.flipped;
       a3 += t.area_3d;
       a2 += std::abs(t.area_uv);
@@ -149,7 +142,7 @@ public:
     std::vector<double> num(nv, 0.), den(nv, 0.);
     for(std::size_t f = 0; f < m.tri.size(); ++f) {
       if(!m_used[f]) continue;
-      const Triangle_stretch& t = m_faces[f];
+      const Face_stretch& t = m_faces[f];
       for(int v : m.tri[f]) {
         num[v] += t.area_3d * t.l2 * t.l2;
         den[v] += t.area_3d;
@@ -164,15 +157,15 @@ public:
   // factorized, when the memory peaks).
   void release()
   {
-    std::vector<Triangle_stretch>().swap(m_faces);
+    std::vector<Face_stretch>().swap(m_faces);
     std::vector<char>().swap(m_used);
   }
 
-  const std::vector<Triangle_stretch>& faces() const { return m_faces; }
+  const std::vector<Face_stretch>& faces() const { return m_faces; }
   bool used(std::size_t f) const { return m_used[f] != 0; }
 
 private:
-  std::vector<Triangle_stretch> m_faces;
+  std::vector<Face_stretch> m_faces;
   std::vector<char> m_used;
 };
 
@@ -228,12 +221,12 @@ inline Flat_distortions flat_distortions(const Flat_triangles& m, const std::vec
 
   // face areas
   double a3 = 0., a2 = 0.;
-  for(const Triangle_stretch& t : evaluated.faces()) {
+  for(const Face_stretch& t : evaluated.faces()) {
     a3 += t.area_3d;
     a2 += std::abs(t.area_uv);
   }
   if(a3 > 0. && a2 > 0.)
-    for(const Triangle_stretch& t : evaluated.faces())
+    for(const Face_stretch& t : evaluated.faces())
       d.area += std::abs(t.area_3d / a3 - std::abs(t.area_uv) / a2);
   return d;
 }

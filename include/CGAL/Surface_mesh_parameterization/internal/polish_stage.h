@@ -51,7 +51,7 @@ inline void open_flat_ears(const Disk_component_base& dc, std::vector<Vec2>& uv)
       ++faces_of[v];
   auto signed_area = [&uv](const Triangle& t) {
     const Vec2 &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
-    return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]));
+    return 0.5 * twice_signed_area(a, b, c);
   };
   double total = 0.;
   for(const Triangle& t : dc.flat.tri)
@@ -87,7 +87,7 @@ inline bool open_flat_faces(const Disk_component_base& dc, const std::vector<cha
 {
   auto signed_area = [&uv](const Triangle& t) {
     const Vec2 &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
-    return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    return twice_signed_area(a, b, c);
   };
   double total = 0.;
   for(const Triangle& t : dc.flat.tri)

@@ -4,6 +4,8 @@
 #ifndef CGAL_SMP_INTERNAL_SHAPE_PRESERVING_WEIGHTS_H
 #define CGAL_SMP_INTERNAL_SHAPE_PRESERVING_WEIGHTS_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -13,19 +15,6 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
-
-using Vec3 = std::array<double, 3>;
-
-inline Vec3 sub3(const Vec3& a, const Vec3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-inline double dot3(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-inline Vec3 cross3(const Vec3& a, const Vec3& b)
-{
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-inline double norm3(const Vec3& a) { return std::sqrt(dot3(a, a)); }
-
-// Angle between a and b in [0, pi]; atan2 stays accurate near 0 and pi, where acos does not.
-inline double angle3(const Vec3& a, const Vec3& b) { return std::atan2(norm3(cross3(a, b)), dot3(a, b)); }
 
 // Floater's (2003) mean-value weights of the ring (neighbours in cyclic order), normalized to
 // sum 1. False for a zero-length or non-finite spoke.
@@ -131,7 +120,6 @@ public:
   }
 
 private:
-  using Vec2 = std::array<double, 2>;
   static double cross2(const Vec2& a, const Vec2& b) { return a[0] * b[1] - a[1] * b[0]; }
 
   // Adds the barycentric coordinates of the origin in (q_k, q_r, q_s).

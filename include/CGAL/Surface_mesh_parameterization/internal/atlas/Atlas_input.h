@@ -8,7 +8,7 @@
 // back to the input's polygons and corners. Nothing is repaired in place: the input's vertex
 // positions and polygon order are what the uv corners are written for.
 
-#include <CGAL/Surface_mesh_parameterization/internal/shape_preserving_weights.h>
+#include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>

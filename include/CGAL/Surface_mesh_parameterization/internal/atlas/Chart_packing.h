@@ -11,6 +11,8 @@
 // charts before it (into their hollows too, not only on top of them), with a gutter between
 // charts given in texels of a square texture.
 // Charts only ever occupy disjoint cells, each widened by half the gutter, so no two overlap.
+// (One header, a little longer than most: the rasterization, the placement and the scale search
+// share the packing's grid.)
 
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 

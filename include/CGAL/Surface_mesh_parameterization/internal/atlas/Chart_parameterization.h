@@ -136,7 +136,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   double signed_area = 0.;
   for(const Triangle& t : chart.flat.tri) {
     const Vec2 &a = chart.uv[std::size_t(t[0])], &b = chart.uv[std::size_t(t[1])], &c = chart.uv[std::size_t(t[2])];
-    signed_area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+    signed_area += twice_signed_area(a, b, c);
   }
   if(signed_area < 0.)
     for(Vec2& q : chart.uv)

@@ -1,0 +1,401 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_ATLAS_BUILD_ATLAS_H
+#define CGAL_SMP_INTERNAL_ATLAS_BUILD_ATLAS_H
+
+// The atlas of a triangulated soup: charts grown, flattened and cut while above the stretch
+// bound, packed (the longest cut across while the square is poorly filled), then written per
+// polygon corner with the report's measures. make_atlas() reads the input and calls it.
+
+#include <CGAL/Surface_mesh_parameterization/Atlas.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Atlas_input.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+
+namespace internal {
+
+// Tells the two versions of make_atlas() apart: the third argument of the soup's is a sequence
+// of named parameters (CGAL's or the package's, which derive from CGAL's), the mesh's a property map.
+template <typename T, typename Tag, typename Base>
+std::true_type is_named_parameters(const CGAL::Named_function_parameters<T, Tag, Base>*);
+std::false_type is_named_parameters(...);
+template <typename T>
+struct Is_named_parameters : decltype(is_named_parameters(static_cast<const T*>(nullptr))) {};
+
+// The settings of make_atlas() read from named parameters.
+struct Atlas_settings
+{
+  double max_stretch = 1.05;
+  unsigned int threads = 0; // 0: one per core
+  Packing_settings packing;
+  Chart_parameterization_settings chart;
+  std::function<void(const Atlas_progress&)> visitor;
+  std::chrono::steady_clock::time_point start = std::chrono::steady_clock::now();
+
+  void tell(Atlas_stage stage, std::size_t done, std::size_t total) const
+  {
+    if(visitor)
+      visitor(Atlas_progress{stage, done, total, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()});
+  }
+};
+
+// The visitor named parameter as a function of an Atlas_progress (its result is ignored).
+template <typename Visitor>
+std::function<void(const Atlas_progress&)> make_atlas_visitor(const Visitor& v)
+{
+  if constexpr(std::is_same<Visitor, CGAL::internal_np::Param_not_found>::value) {
+    return {};
+  } else {
+    static_assert(std::is_invocable<Visitor, const Atlas_progress&>::value,
+                  "the visitor of make_atlas() must be callable with a const Atlas_progress&");
+    return [v](const Atlas_progress& p) mutable { std::invoke(v, p); };
+  }
+}
+
+template <typename NamedParameters>
+Atlas_settings read_atlas_settings(const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  Atlas_settings s;
+  s.max_stretch = choose_parameter(get_parameter(np, internal_np::max_stretch), s.max_stretch);
+  s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), s.threads);
+  s.packing.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.packing.resolution);
+  s.packing.gutter = choose_parameter(get_parameter(np, internal_np::gutter), s.packing.gutter);
+  s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
+  s.visitor = make_atlas_visitor(get_parameter(np, CGAL::internal_np::visitor));
+  return s;
+}
+
+inline double seconds_since(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+struct Chart_areas
+{
+  double uv = 0., surface = 0.;
+};
+
+inline Chart_areas chart_areas(const Chart_map& chart)
+{
+  Chart_areas a;
+  for(const Triangle& t : chart.flat.tri) {
+    const Face_stretch s = triangle_stretch(chart.flat.xyz[t[0]], chart.flat.xyz[t[1]], chart.flat.xyz[t[2]],
+                                                chart.uv[t[0]], chart.uv[t[1]], chart.uv[t[2]]);
+    a.uv += std::abs(s.area_uv);
+    a.surface += s.area_3d;
+  }
+  return a;
+}
+
+// The value of `along` (one per triangle of `chart`) that halves the chart's surface area.
+inline double area_median(const std::vector<double>& along, const Flat_triangles& chart)
+{
+  std::vector<std::pair<double, double> > v(along.size()); // (position, area)
+  double total = 0.;
+  for(std::size_t i = 0; i < along.size(); ++i) {
+    const Triangle& t = chart.tri[i];
+    v[i] = {along[i], triangle_area(chart.xyz[t[0]], chart.xyz[t[1]], chart.xyz[t[2]])};
+    total += v[i].second;
+  }
+  std::sort(v.begin(), v.end());
+  double sum = 0.;
+  for(const auto& e : v) {
+    sum += e.second;
+    if(sum >= 0.5 * total) return e.first;
+  }
+  return v.empty() ? 0. : v.back().first;
+}
+
+// The stages after the input: charts, their maps, the packing, the uv of the corners of the
+// triangles (`corner_written`: per polygon corner, whether it got one; `vertex_uv`: a uv of
+// every welded vertex in a chart).
+inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons, const Atlas_settings& settings,
+                        Atlas& atlas, std::vector<std::vector<char> >& corner_written,
+                        std::unordered_map<int, Vec2>& vertex_uv)
+{
+  Atlas_report& r = atlas.report;
+  const std::size_t nt = m.vertex.size();
+  auto t0 = std::chrono::steady_clock::now();
+  Chart_growing g(m);
+  std::vector<char> allowed(nt, 1);
+  // a polygon joins a chart while its normal is within a right angle of the chart's: narrower
+  // cones cut many more seams for little less stretch, wider ones make charts that take
+  // longer to flatten and are cut more often for their stretch
+  const double first_angle = 0.5 * 3.14159265358979323846;
+  int n = g.grow(allowed, 0, first_angle, 0);
+  std::vector<double> angle(std::size_t(n), first_angle);
+  r.seconds_cutting += seconds_since(t0);
+
+  // flatten every chart; a chart above the bound (or that cannot be flattened) is grown again
+  // from its own triangles, with a narrower normal cone and fewer polygons
+  std::vector<Chart_map> charts(static_cast<std::size_t>(n));
+  std::vector<std::vector<std::size_t> > members;
+  // the triangles of the charts numbered from `first` on, all among `triangles`
+  auto collect = [&](int first, int count, const std::vector<std::size_t>& triangles) {
+    members.resize(std::size_t(first + count));
+    for(int c = first; c < first + count; ++c) members[std::size_t(c)].clear();
+    for(std::size_t t : triangles)
+      if(g.chart(t) >= first)
+        members[std::size_t(g.chart(t))].push_back(t);
+  };
+  auto units_of = [&m](const std::vector<std::size_t>& triangles) {
+    std::size_t units = triangles.empty() ? 0 : 1;
+    for(std::size_t i = 1; i < triangles.size(); ++i)
+      units += m.polygon[triangles[i]] != m.polygon[triangles[i - 1]];
+    return units;
+  };
+  std::vector<std::size_t> every(nt);
+  for(std::size_t t = 0; t < nt; ++t) every[t] = t;
+  collect(0, n, every);
+  // cuts flattened chart c across the middle of its long side (a short seam), each half grown
+  // again alone; false if it cannot be cut
+  auto cut_across = [&](std::size_t c, const std::vector<double>& along) {
+    const std::vector<std::size_t> triangles = charts[c].triangles;
+    const double middle = area_median(along, charts[c].flat);
+    std::unordered_map<std::size_t, std::size_t> polygon_first; // a polygon's triangles stay together
+    for(std::size_t i = 0; i < triangles.size(); ++i)
+      polygon_first.emplace(m.polygon[triangles[i]], i);
+    std::array<std::vector<char>, 2> half{std::vector<char>(nt, 0), std::vector<char>(nt, 0)};
+    std::size_t in_first = 0;
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      const bool first_half = along[polygon_first[m.polygon[triangles[i]]]] < middle;
+      half[first_half ? 0 : 1][triangles[i]] = 1;
+      in_first += first_half;
+    }
+    if(in_first == 0 || in_first == triangles.size())
+      return false;
+    const int first = int(charts.size());
+    const int made_first = g.grow(half[0], first, angle[c], 0);
+    const int made = made_first + g.grow(half[1], first + made_first, angle[c], 0);
+    collect(first, made, triangles);
+    charts.resize(std::size_t(first + made));
+    angle.resize(std::size_t(first + made), angle[c]);
+    charts[c] = Chart_map();
+    return true;
+  };
+  // a flattened chart c above the bound is cut in two across its length; one that could not
+  // be flattened is grown again with a narrower cone, or, if it is one polygon, split into
+  // its triangles laid out alone
+  std::vector<Chart_areas> areas; // per chart, measured once it is flattened
+  auto cut_if_needed = [&](std::size_t c) {
+    if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
+      return;
+    const std::vector<std::size_t> triangles = charts[c].triangles;
+    const std::size_t units = units_of(triangles);
+    if(units < 2) {
+      if(!charts[c].ok)
+        for(std::size_t i = 0; i < triangles.size(); ++i) {
+          Chart_map single;
+          single.triangles = {triangles[i]};
+          make_chart_vertices(m, g, single);
+          layout_single_triangle(single);
+          single.ok = true;
+          single.l2 = 1.;
+          if(i == 0) { charts[c] = single; areas[c] = chart_areas(single); }
+          else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
+        }
+      return;
+    }
+    const auto t1 = std::chrono::steady_clock::now();
+    if(charts[c].ok) {
+      const Chart_areas& a = areas[c];
+      std::vector<double> along;
+      chart_length(charts[c].uv, charts[c].flat.tri, a.uv, a.surface, along);
+      if(cut_across(c, along)) {
+        r.seconds_cutting += seconds_since(t1);
+        return;
+      }
+    }
+    allowed.assign(nt, 0);
+    for(std::size_t t : triangles) allowed[t] = 1;
+    const double a = angle[c] * 0.6;
+    const int first = int(charts.size());
+    const int made = g.grow(allowed, first, a, (units + 1) / 2, 2);
+    collect(first, made, triangles);
+    charts.resize(std::size_t(first + made));
+    angle.resize(std::size_t(first + made), a);
+    charts[c] = Chart_map(); // emptied: its triangles are in the new charts
+    r.seconds_cutting += seconds_since(t1);
+  };
+  // flattens the charts from `begin` on, and the ones they are cut into, a batch at a time:
+  // the charts of a batch on several threads (the corners' union-find is shared: the chart
+  // vertices are numbered before), then their cuts in order; told to the visitor if `visit`
+  const unsigned int threads = thread_count(settings.threads);
+  const std::size_t chunk = 64 * std::size_t(threads); // charts between two visits of the visitor
+  std::size_t flattened = 0;
+  auto settle = [&](std::size_t begin, bool visit) {
+    for(std::size_t end = begin; begin < charts.size(); begin = end) {
+      end = (std::min)(charts.size(), begin + chunk);
+      auto t1 = std::chrono::steady_clock::now();
+      for(std::size_t c = begin; c < end; ++c) {
+        if(charts[c].triangles.empty())
+          charts[c].triangles = members[c];
+        make_chart_vertices(m, g, charts[c]);
+      }
+      // the largest first: a large chart started last would keep one thread busy alone
+      std::vector<std::size_t> order(end - begin);
+      for(std::size_t i = 0; i < order.size(); ++i) order[i] = begin + i;
+      std::stable_sort(order.begin(), order.end(), [&charts](std::size_t a, std::size_t b) {
+        return charts[a].triangles.size() > charts[b].triangles.size();
+      });
+      areas.resize(charts.size());
+      parallel_for_each(order.size(), threads, [&](std::size_t i) {
+        flatten_chart(charts[order[i]], settings.chart);
+        areas[order[i]] = chart_areas(charts[order[i]]);
+      });
+      r.seconds_parameterization += seconds_since(t1);
+      flattened += end - begin;
+      for(std::size_t c = begin; c < end; ++c)
+        cut_if_needed(c);
+      if(visit)
+        settings.tell(Atlas_stage::FLATTENING, flattened, flattened + charts.size() - end);
+    }
+  };
+  settle(0, true);
+
+  // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
+  // longest chart (the one that leaves the most room unused around it) is cut across
+  auto t2 = std::chrono::steady_clock::now();
+  const double other_stages = r.seconds_cutting + r.seconds_parameterization;
+  std::vector<std::size_t> kept;
+  std::vector<std::vector<Vec2> > uv;
+  std::vector<std::vector<Triangle> > chart_triangles;
+  std::vector<double> area_uv, area_3d;
+  double scale_hint = 0.;
+  int round = 0;
+  for(;; ++round) {
+    kept.clear();
+    uv.clear();
+    chart_triangles.clear();
+    area_uv.clear();
+    area_3d.clear();
+    for(std::size_t c = 0; c < charts.size(); ++c) {
+      if(charts[c].triangles.empty()) continue;
+      kept.push_back(c);
+      area_uv.push_back(areas[c].uv);
+      area_3d.push_back(areas[c].surface);
+      uv.push_back(charts[c].uv);
+      chart_triangles.push_back(charts[c].flat.tri);
+    }
+    settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(settings.packing.max_cut_rounds) + 1);
+    if(round == settings.packing.max_cut_rounds)
+      break;
+    std::vector<std::vector<Vec2> > turned = uv;
+    const Packing_result estimate =
+      estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d), settings.packing, scale_hint);
+    scale_hint = estimate.scale;
+    if(estimate.utilization >= settings.packing.goal)
+      break;
+    // the longest chart that can be cut
+    double longest = 0.;
+    std::size_t cut = kept.size();
+    std::vector<double> along, best_along;
+    for(std::size_t i = 0; i < kept.size(); ++i)
+      if(units_of(charts[kept[i]].triangles) >= 2) {
+        const double l = chart_length(charts[kept[i]].uv, chart_triangles[i], area_uv[i], area_3d[i], along);
+        if(l > longest) { longest = l; cut = i; best_along.swap(along); }
+      }
+    const auto t3 = std::chrono::steady_clock::now();
+    const std::size_t begin = charts.size();
+    if(cut < kept.size())
+      cut_across(kept[cut], best_along);
+    r.seconds_cutting += seconds_since(t3);
+    if(charts.size() == begin)
+      break;
+    settle(begin, false); // told as packing rounds
+  }
+  const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+  settings.tell(Atlas_stage::PACKING, std::size_t(round) + 1, std::size_t(round) + 1);
+  r.utilization = packed.utilization;
+  r.charts = kept.size();
+  r.seconds_packing = seconds_since(t2) - (r.seconds_cutting + r.seconds_parameterization - other_stages);
+
+  // per polygon corner, in the input's order
+  atlas.chart.assign(number_of_polygons, 0);
+  corner_written.resize(number_of_polygons);
+  for(std::size_t p = 0; p < number_of_polygons; ++p)
+    corner_written[p].assign(atlas.uv[p].size(), 0);
+  Flat_triangles all;
+  std::vector<Vec2> all_uv;
+  for(std::size_t i = 0; i < kept.size(); ++i) {
+    const Chart_map& chart = charts[kept[i]];
+    for(std::size_t j = 0; j < chart.triangles.size(); ++j) {
+      const std::size_t t = chart.triangles[j];
+      const std::size_t p = m.polygon[t];
+      atlas.chart[p] = i;
+      for(int k = 0; k < 3; ++k) {
+        const Vec2& q = uv[i][std::size_t(chart.corner_vertex[3 * j + std::size_t(k)])];
+        const std::size_t corner = std::size_t(m.corner[t][std::size_t(k)]);
+        atlas.uv[p][corner] = q;
+        corner_written[p][corner] = 1;
+        vertex_uv.emplace(m.vertex[t][std::size_t(k)], q);
+        all.xyz.push_back(m.xyz[std::size_t(m.vertex[t][std::size_t(k)])]);
+        all_uv.push_back(q);
+      }
+      const int b = int(all.xyz.size());
+      all.tri.push_back({b - 3, b - 2, b - 1});
+    }
+  }
+  r.charts = kept.size();
+
+  Flat_stretch measure;
+  const Flat_stretch_summary s = measure.evaluate(all, all_uv);
+  r.l2_stretch = s.l2;
+  r.linf_stretch = s.linf;
+  r.flipped_faces = 0;
+  for(const Triangle& t : all.tri) {
+    const Vec2 &a = all_uv[std::size_t(t[0])], &b = all_uv[std::size_t(t[1])], &c = all_uv[std::size_t(t[2])];
+    if(internal::twice_signed_area(a, b, c) < 0.)
+      ++r.flipped_faces;
+  }
+
+  // seams: edges of two or more sides that are not one glued pair, among the sides of the
+  // input's polygons (the diagonals that split them are no edges of the input)
+  std::unordered_map<std::pair<int, int>, std::pair<int, int>, Edge_hash> edges; // sides, glued sides
+  for(std::size_t t = 0; t < nt; ++t)
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t size = atlas.uv[m.polygon[t]].size();
+      const std::size_t ca = std::size_t(m.corner[t][std::size_t(k)]), cb = std::size_t(m.corner[t][std::size_t((k + 1) % 3)]);
+      if(cb != (ca + 1) % size && ca != (cb + 1) % size)
+        continue;
+      const int a = m.vertex[t][std::size_t(k)], b = m.vertex[t][std::size_t((k + 1) % 3)];
+      auto& e = edges[std::make_pair((std::min)(a, b), (std::max)(a, b))];
+      ++e.first;
+      e.second += g.glued(int(3 * t) + k);
+    }
+  for(const auto& e : edges) {
+    const double l = norm3(sub3(m.xyz[std::size_t(e.first.first)], m.xyz[std::size_t(e.first.second)]));
+    r.edge_length += l;
+    if(e.second.first >= 2 && !(e.second.first == 2 && e.second.second == 2))
+      r.seam_length += l;
+  }
+}
+
+} // namespace internal
+
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_ATLAS_BUILD_ATLAS_H
