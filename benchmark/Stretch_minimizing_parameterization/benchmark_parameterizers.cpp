@@ -55,6 +55,8 @@
 
 #include <Eigen/Core>
 
+#include <boost/lexical_cast.hpp>
+
 #include <malloc.h>
 #include <poll.h>
 #include <signal.h>
@@ -485,6 +487,19 @@ struct Mesh_spec
   std::string name;
 };
 
+// A number given on the command line, or an error exit: atoi and atof would read "12abc" as 12
+// and "x" as 0.
+template <typename T>
+T parse_number(const std::string& what, const std::string& text)
+{
+  try {
+    return boost::lexical_cast<T>(text);
+  } catch(const boost::bad_lexical_cast&) {
+    std::cerr << "Error: " << what << ": '" << text << "' is not a number" << std::endl;
+    std::exit(EXIT_FAILURE);
+  }
+}
+
 Mesh_spec parse_mesh_spec(const std::string& arg)
 {
   Mesh_spec s;
@@ -492,7 +507,7 @@ Mesh_spec parse_mesh_spec(const std::string& arg)
   const std::size_t at = arg.rfind("@loop");
   if(at != std::string::npos) {
     s.path = arg.substr(0, at);
-    s.loops = std::atoi(arg.c_str() + at + 5);
+    s.loops = parse_number<int>(arg + " (@loopN)", arg.substr(at + 5));
   }
   s.name = fs::path(s.path).stem().string();
   if(s.loops > 0)
@@ -1217,11 +1232,11 @@ int main(int argc, char** argv)
     if(a == "--out")
       options.out = value();
     else if(a == "--runs")
-      options.runs = std::max(1, std::atoi(value().c_str()));
+      options.runs = std::max(1, parse_number<int>(a, value()));
     else if(a == "--budget")
-      options.budget = std::atof(value().c_str());
+      options.budget = parse_number<double>(a, value());
     else if(a == "--hard-limit")
-      options.hard_limit = std::atof(value().c_str());
+      options.hard_limit = parse_number<double>(a, value());
     else if(a == "--scratch")
       options.scratch = value();
     else if(a == "--methods") {
@@ -1243,7 +1258,7 @@ int main(int argc, char** argv)
   // the older form: mesh.off runs
   if(positional.size() == 2 && !positional[1].empty() &&
      positional[1].find_first_not_of("0123456789") == std::string::npos && !fs::exists(positional[1])) {
-    options.runs = std::max(1, std::atoi(positional[1].c_str()));
+    options.runs = std::max(1, parse_number<int>("runs", positional[1]));
     positional.pop_back();
   }
   if(positional.empty())
