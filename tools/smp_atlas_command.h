@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smp-parameterize --atlas: any polygon soup in, a texture atlas out. Part of
-// smp_parameterize.cpp (its options, messages and JSON helpers), kept apart so that the disk
+// smp_parameterize.cpp (its options, messages and report writer), kept apart so that the disk
 // path and the atlas path each read in one place.
 
 #ifndef SMP_TOOLS_ATLAS_COMMAND_H
@@ -98,26 +98,20 @@ int run_atlas(const Options& o)
   const double render_seconds = seconds_since(t3);
 
   // ---- report
-  std::ostringstream json;
-  json << "{\n  \"input\": " << json_string(o.input) << ",\n"
-       << "  \"mesh\": {\"vertices\": " << points.size() << ", \"polygons\": " << polygons.size()
-       << ", \"triangles\": " << r.triangles << ", \"welded_vertices\": " << r.welded_vertices
-       << ", \"flat_polygons\": " << r.flat_polygons << "},\n"
-       << "  \"method\": \"atlas\",\n"
-       << "  \"options\": {\"max_stretch\": " << json_number(o.max_stretch) << ", \"resolution\": " << o.resolution
-       << ", \"gutter\": " << json_number(o.gutter) << "},\n"
-       << "  \"status\": " << json_string(SMP::error_message(r.status)) << ",\n"
-       << "  \"atlas\": {\"charts\": " << r.charts << ", \"l2_stretch\": " << json_number(r.l2_stretch)
-       << ", \"linf_stretch\": " << json_number(r.linf_stretch) << ", \"flipped_faces\": " << r.flipped_faces
-       << ", \"seam_length\": " << json_number(r.seam_length) << ", \"edge_length\": " << json_number(r.edge_length)
-       << ", \"utilization\": " << json_number(r.utilization) << "},\n"
-       << "  \"seconds\": {\"read\": " << json_number(read_seconds) << ", \"input\": " << json_number(r.seconds_input)
-       << ", \"cutting\": " << json_number(r.seconds_cutting) << ", \"parameterization\": "
-       << json_number(r.seconds_parameterization) << ", \"packing\": " << json_number(r.seconds_packing)
-       << ", \"atlas\": " << json_number(r.seconds) << ", \"write\": " << json_number(write_seconds)
-       << ", \"pictures\": " << json_number(render_seconds) << "},\n"
-       << "  ";
-  write_report(dir, json, outputs);
+  Json report;
+  report["input"] = o.input;
+  report["mesh"] = {{"vertices", points.size()}, {"polygons", polygons.size()}, {"triangles", r.triangles},
+                    {"welded_vertices", r.welded_vertices}, {"flat_polygons", r.flat_polygons}};
+  report["method"] = "atlas";
+  report["options"] = {{"max_stretch", o.max_stretch}, {"resolution", o.resolution}, {"gutter", o.gutter}};
+  report["status"] = SMP::error_message(r.status);
+  report["atlas"] = {{"charts", r.charts}, {"l2_stretch", r.l2_stretch}, {"linf_stretch", r.linf_stretch},
+                     {"flipped_faces", r.flipped_faces}, {"seam_length", r.seam_length},
+                     {"edge_length", r.edge_length}, {"utilization", r.utilization}};
+  report["seconds"] = {{"read", read_seconds}, {"input", r.seconds_input}, {"cutting", r.seconds_cutting},
+                       {"parameterization", r.seconds_parameterization}, {"packing", r.seconds_packing},
+                       {"atlas", r.seconds}, {"write", write_seconds}, {"pictures", render_seconds}};
+  write_report(dir, report, outputs);
   if(!o.quiet)
     std::cout << "wrote " << fs::absolute(dir).string() << "/{" << name << ".obj, report.json"
               << (o.pictures ? ", *.png" : "") << "}" << std::endl;

@@ -31,6 +31,8 @@
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -237,28 +239,6 @@ struct Chosen_border
 typedef SMP::Shape_preserving_parameterizer_3<Mesh, Chosen_border>        Floater;
 typedef SMP::Mean_value_coordinates_parameterizer_3<Mesh, Chosen_border>  MVC;
 
-std::string json_string(const std::string& s)
-{
-  std::ostringstream o;
-  o << '"';
-  for(char c : s) {
-    if(c == '"' || c == '\\') o << '\\' << c;
-    else if(c == '\n') o << "\\n";
-    else if((unsigned char)c < 0x20) o << "\\u" << std::hex << std::setw(4) << std::setfill('0') << int(c) << std::dec;
-    else o << c;
-  }
-  o << '"';
-  return o.str();
-}
-
-std::string json_number(double x)
-{
-  if(!std::isfinite(x)) return "null";
-  std::ostringstream o;
-  o << std::setprecision(10) << x;
-  return o.str();
-}
-
 struct Run
 {
   SMP::Error_code status = SMP::OK;
@@ -381,15 +361,14 @@ void write_textured_obj(const fs::path& dir, const std::string& name, const std:
   outputs.push_back("checker.png");
 }
 
-// Ends `json` (its fields so far, the last one followed by a comma) with the list of the files
-// written, and writes it as report.json.
-void write_report(const fs::path& dir, std::ostringstream& json, const std::vector<std::string>& outputs)
+// The report, its fields in the order written (a non-finite number is written as null).
+typedef nlohmann::ordered_json Json;
+
+// Ends `report` with the list of the files written, and writes it as report.json.
+void write_report(const fs::path& dir, Json& report, const std::vector<std::string>& outputs)
 {
-  json << "\"outputs\": [";
-  for(std::size_t i = 0; i < outputs.size(); ++i)
-    json << (i ? ", " : "") << json_string(outputs[i]);
-  json << "]\n}\n";
-  write_atomically(dir / "report.json", json.str());
+  report["outputs"] = outputs;
+  write_atomically(dir / "report.json", report.dump(2) + "\n");
 }
 
 // The uv layout by stretch (and by chart, for an atlas), and the surface with the checkerboard (`checks` squares a side)
@@ -576,43 +555,34 @@ int main(int argc, char** argv)
   const double render_seconds = seconds_since(t3);
 
   // ---- report
-  std::ostringstream json;
-  json << "{\n  \"input\": " << json_string(o.input) << ",\n"
-       << "  \"mesh\": {\"vertices\": " << input_vertices << ", \"faces\": " << input_faces
-       << ", \"boundaries\": " << loops.size() << ", \"components\": " << components
-       << ", \"cut_open\": " << (o.cut ? "true" : "false") << "},\n"
-       << "  \"method\": " << json_string(o.method) << ",\n"
-       << "  \"options\": {\"border\": " << json_string(o.border) << ", \"preset\": " << json_string(o.preset)
-       << ", \"start\": " << json_string(o.start) << ", \"update\": " << json_string(o.update)
-       << ", \"rule\": " << json_string(o.rule) << ", \"eta\": " << json_number(o.eta) << ", \"iterations\": " << o.iterations
-       << ", \"descent\": " << o.descent << ", \"polish\": " << o.polish << ", \"polish_time\": " << json_number(o.polish_time)
-       << ", \"free_border\": " << (o.free_border ? "true" : "false")
-       << ", \"charts\": " << (o.charts ? "true" : "false") << "},\n"
-       << "  \"status\": " << json_string(SMP::error_message(run.status)) << ",\n"
-       << "  \"history\": [";
-  for(std::size_t h = 0; h < run.history.size(); ++h) {
-    const auto& s = run.history[h];
-    json << (h ? ",\n    " : "\n    ") << "{\"step\": " << s.step << ", \"l2_stretch\": " << json_number(s.l2_stretch)
-         << ", \"linf_stretch\": " << json_number(s.linf_stretch) << ", \"flipped_faces\": " << s.flipped_faces
-         << ", \"degenerate_uv_faces\": " << s.degenerate_uv_faces << ", \"seconds\": " << json_number(s.seconds) << "}";
-  }
-  json << (run.history.empty() ? "" : "\n  ") << "],\n"
-       << "  \"kept_step\": " << (ours ? std::to_string(run.kept_step) : std::string("null")) << ",\n"
-       << "  \"polish\": {\"ran\": " << (run.polish.ran() ? "true" : "false") << ", \"descent_iterations\": "
-       << run.polish.descent_iterations << ", \"iterations\": " << run.polish.iterations << ", \"l2_before\": " << json_number(run.polish.l2_before) << ", \"l2_after\": "
-       << json_number(run.polish.l2_after) << ", \"seconds\": " << json_number(run.polish.seconds)
-       << ", \"message\": " << json_string(run.polish.message) << "},\n"
-       << "  \"measures\": {\"faces\": " << stats.number_of_faces << ", \"l2_stretch\": " << json_number(stats.l2_stretch)
-       << ", \"linf_stretch\": " << json_number(stats.linf_stretch) << ", \"edge_distortion\": " << json_number(stats.edge_distortion)
-       << ", \"angle_distortion\": " << json_number(stats.angle_distortion) << ", \"area_distortion\": "
-       << json_number(stats.area_distortion) << ", \"flipped_faces\": " << stats.flipped_faces
-       << ", \"degenerate_uv_faces\": " << stats.degenerate_uv_faces << ", \"degenerate_3d_faces\": "
-       << stats.degenerate_3d_faces << "},\n"
-       << "  \"seconds\": {\"read\": " << json_number(read_seconds) << ", \"parameterize\": " << json_number(parameterize_seconds)
-       << ", \"measure\": " << json_number(measure_seconds) << ", \"write\": " << json_number(write_seconds)
-       << ", \"pictures\": " << json_number(render_seconds) << "},\n"
-       << "  ";
-  write_report(dir, json, outputs);
+  Json report;
+  report["input"] = o.input;
+  report["mesh"] = {{"vertices", input_vertices}, {"faces", input_faces}, {"boundaries", loops.size()},
+                    {"components", components}, {"cut_open", o.cut}};
+  report["method"] = o.method;
+  report["options"] = {{"border", o.border}, {"preset", o.preset}, {"start", o.start}, {"update", o.update},
+                       {"rule", o.rule}, {"eta", o.eta}, {"iterations", o.iterations}, {"descent", o.descent},
+                       {"polish", o.polish}, {"polish_time", o.polish_time}, {"free_border", o.free_border},
+                       {"charts", o.charts}};
+  report["status"] = SMP::error_message(run.status);
+  report["history"] = Json::array();
+  for(const auto& s : run.history)
+    report["history"].push_back({{"step", s.step}, {"l2_stretch", s.l2_stretch}, {"linf_stretch", s.linf_stretch},
+                                 {"flipped_faces", s.flipped_faces}, {"degenerate_uv_faces", s.degenerate_uv_faces},
+                                 {"seconds", s.seconds}});
+  report["kept_step"] = ours ? Json(run.kept_step) : Json(nullptr);
+  report["polish"] = {{"ran", run.polish.ran()}, {"descent_iterations", run.polish.descent_iterations},
+                      {"iterations", run.polish.iterations}, {"l2_before", run.polish.l2_before},
+                      {"l2_after", run.polish.l2_after}, {"seconds", run.polish.seconds},
+                      {"message", run.polish.message}};
+  report["measures"] = {{"faces", stats.number_of_faces}, {"l2_stretch", stats.l2_stretch},
+                        {"linf_stretch", stats.linf_stretch}, {"edge_distortion", stats.edge_distortion},
+                        {"angle_distortion", stats.angle_distortion}, {"area_distortion", stats.area_distortion},
+                        {"flipped_faces", stats.flipped_faces}, {"degenerate_uv_faces", stats.degenerate_uv_faces},
+                        {"degenerate_3d_faces", stats.degenerate_3d_faces}};
+  report["seconds"] = {{"read", read_seconds}, {"parameterize", parameterize_seconds}, {"measure", measure_seconds},
+                       {"write", write_seconds}, {"pictures", render_seconds}};
+  write_report(dir, report, outputs);
 
   if(!o.quiet)
     std::cout << o.method << ": L2 stretch " << std::setprecision(6) << stats.l2_stretch << ", Linf " << stats.linf_stretch
