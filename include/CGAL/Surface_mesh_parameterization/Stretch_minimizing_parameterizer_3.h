@@ -5,7 +5,7 @@
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_PARAMETERIZER_3_H
 
 // The package's main class. Longer than most headers because it is the reference documentation
-// of the method and of its options (about half of its lines); the iteration's parts (weights,
+// of the method and of its options (much of its length); the iteration's parts (weights,
 // stretch, solver, polish) live in internal headers.
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
@@ -111,12 +111,12 @@ namespace Surface_mesh_parameterization {
 ///                                             Eigen::COLAMDOrdering<int> > >
 /// \endcode
 ///         or, when the macro `CGAL_SMP_USE_UMFPACK` is defined (the package's CMake target
-///         defines it if SuiteSparse's UMFPACK is found), about 1.7 times faster here, an internal
+///         defines it if SuiteSparse's UMFPACK is found), faster here (the benchmark says by how much), an internal
 ///         subclass of `Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType>`, used with
 ///         AMD ordering below 150,000 unknowns and METIS above, without UMFPACK's iterative
 ///         refinement, and frugal with memory: its work area is sized from the symbolic analysis
 ///         and then from the previous factorization, and its factors are freed as soon as they
-///         have served (on 830k vertices the peak memory of a call went from 1404 to 1093 MiB, benchmark/results).
+///         have served (the benchmark measures the peak memory of a call).
 ///         A `Eigen::UmfPackLU` given here is ordered and run without refinement the same way.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`

@@ -5,19 +5,19 @@
 #define CGAL_SMP_INTERNAL_UMFPACK_LU_H
 
 // Eigen's UmfPackLU, set up for a sequence of factorizations of one pattern, with an eye on
-// the peak memory (measured on the 830k-vertex Loop refinement of the mannequin head, where
-// UMFPACK's factors are about 630 MB):
+// the peak memory (measured by the benchmark on the Loop refinements of the mannequin head):
 // - UMFPACK's iterative refinement is off (Eigen leaves it on; it made each solve several times
 //   slower for no gain in accuracy here);
-// - METIS orders large systems (far fewer flops and less memory than AMD from 200k unknowns on;
-//   below, its own cost outweighs that), AMD the others or if this UMFPACK has no METIS;
+// - METIS orders large systems (far fewer flops and less memory than AMD on large meshes; on
+//   small ones its own cost outweighs that: see metis_threshold), AMD the others or if this
+//   UMFPACK has no METIS;
 // - the work area of the numeric factorization is allocated once at the size it needs: UMFPACK
 //   starts from a fraction of an upper bound and grows by 1.2 at a time, which left the peak
-//   about 100 MB above the need. The first factorization is sized from the symbolic estimate of
+//   well above the need. The first factorization is sized from the symbolic estimate of
 //   the factors, the next ones from the peak of the previous one (same pattern, same pivots);
 // - on large systems, the memory freed since the last factorization (by METIS, by the
 //   stretch evaluation) is handed back to the system before the next one: glibc keeps freed
-//   blocks below 32 MB in its heap, and the peak was about 200 MB higher for it;
+//   blocks below 32 MB in its heap, which raised the peak;
 // - the factors are freed as soon as they have served (`release_numeric()` after the solve: the
 //   stretch evaluation and the weight update that follow would otherwise add to them), and
 //   `release()` frees the analysis once the iteration is over.
@@ -79,7 +79,7 @@ public:
     release_numeric(); // before the new one is made, not while
 #if defined(__GLIBC__)
     if(m_large)
-      malloc_trim(0); // a few ms at 830k vertices
+      malloc_trim(0); // cheap next to the factorization
 #endif
     Base::factorize(A);
     if(this->info() == Eigen::Success && this->m_umfpackInfo(UMFPACK_VARIABLE_PEAK) > 0.)

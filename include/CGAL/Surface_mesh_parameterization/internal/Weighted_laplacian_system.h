@@ -28,7 +28,7 @@ namespace internal {
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and
 // v columns together. Iterative solvers start from the previous solution.
 //
-// Memory: the factorization is the peak (on 830k vertices, UMFPACK's factors take 600 MB), so
+// Memory: the factorization is the peak (the factors are the largest arrays of a call), so
 // what is not needed then is not held then. With a direct solver, the caller's weights are
 // freed during the factorization and given back divided by their row sum (which changes no
 // solution): the matrix holds them meanwhile, and the few weights of border neighbours are

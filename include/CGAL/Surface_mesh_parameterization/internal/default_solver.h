@@ -6,8 +6,8 @@
 
 // The default sparse solver of the package. With CGAL_SMP_USE_UMFPACK defined (the CMake target
 // defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's
-// SparseLU with COLAMD ordering. On the mannequin head and its Loop refinement, UMFPACK without iterative
-// refinement took about 0.6 times the time of SparseLU (benchmark/).
+// SparseLU with COLAMD ordering. UMFPACK without iterative refinement is the faster of the two
+// on the benchmark's meshes (benchmark/ measures by how much).
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
