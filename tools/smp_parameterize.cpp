@@ -31,6 +31,8 @@
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <boost/program_options.hpp>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -60,41 +62,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* usage =
-  "usage: smp-parameterize MESH [options]\n"
-  "  MESH                  a triangle mesh: .off, .obj, .ply or .stl\n"
-  "  -o, --output DIR      where to write the results (default: MESHNAME_uv)\n"
-  "  -m, --method M        uopt (default), u1, u0: this package's stretch minimization\n"
-  "                        (U^opt, one step, the start only); for comparison, CGAL's\n"
-  "                        mvc, dcm, dap (fixed border), lscm, arap (free border)\n"
-  "  --eta X               weight update exponent, 0 < X <= 1 (default 1)\n"
-  "  --iterations N        cap on the steps of uopt (default 20)\n"
-  "  --border B            square (default, CGAL's corners), ear-aware (square, corners that\n"
-  "                        avoid flattened border faces), circle, natural (LSCM's border)\n"
-  "  --preset P            paper (default: the paper's method) or lowest (clamped cotangent\n"
-  "                        start, edge update, 30 descent steps: lower stretch for 2-3 times the time)\n"
-  "  --start S             start weights of u0/u1/uopt: floater, mvc or cot (clamped cotangent)\n"
-  "  --update U            stretch that divides the weights: vertex, symmetric or edge\n"
-  "  --rule R              when a step does not lower the stretch: stop or halve (eta)\n"
-  "  --descent N           then at most N cheap descent steps on Sander's stretch energy\n"
-  "                        (flip-free; default: the preset's, 0 or 30)\n"
-  "  --polish N            then at most N Newton steps on Sander's stretch energy (flip-free)\n"
-  "  --polish-time S       time budget of the polish in seconds\n"
-  "  --free-border         let the polish move the border (never crossing itself)\n"
-  "  --threads N           threads of u0/u1/uopt on large meshes (default 0: one per core)\n"
-  "  --cut                 open a closed genus-0 mesh along a seam first\n"
-  "  --charts              parameterize each connected component into its own chart\n"
-  "  --atlas               any mesh (closed, any genus, several parts, non-manifold, polygons):\n"
-  "                        cut into charts, each flattened with a free border, packed into\n"
-  "                        the unit square; the OBJ keeps the input's vertices and faces\n"
-  "  --max-stretch X       atlas: cut further every chart above this L2 stretch (default 1.05)\n"
-  "  --resolution N        atlas: texels along a side of the texture (default 1024)\n"
-  "  --gutter T            atlas: texels between charts (default 2)\n"
-  "  --size PX             picture size in pixels (default 800)\n"
-  "  --up A                the model's up axis in the pictures: x, y or z (default z)\n"
-  "  --no-pictures         write no PNG picture\n"
-  "  -q, --quiet           no progress lines\n";
-
 struct Options
 {
   std::string input, output, method = "uopt", border = "square", preset = "paper";
@@ -116,72 +83,89 @@ struct Options
 
 Options parse(int argc, char** argv)
 {
+  namespace po = boost::program_options;
   Options o;
-  auto value = [&](int& i) -> std::string {
-    if(i + 1 >= argc)
-      die(std::string("option ") + argv[i] + " needs a value", 2);
-    return argv[++i];
-  };
-  auto number = [&](const std::string& option, const std::string& text) {
-    char* end = nullptr;
-    const double x = std::strtod(text.c_str(), &end);
-    if(end == text.c_str() || *end != '\0' || !std::isfinite(x))
-      die("option " + option + ": '" + text + "' is not a number", 2);
-    return x;
-  };
-  // a whole number from `low` to `high` (`unit`: what it counts, for the message)
-  auto whole_number = [&](const std::string& option, int& i, double low, double high, const std::string& unit) {
-    const double n = number(option, value(i));
-    if(n < low || n > high || n != std::floor(n))
-      die("option " + option + ": give a whole number " + unit + "from " + std::to_string(long(low)) + " to " +
-          std::to_string(long(high)), 2);
-    return int(n);
-  };
-  for(int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if(a == "-h" || a == "--help") { std::cout << usage; std::exit(0); }
-    else if(a == "-o" || a == "--output") o.output = value(i);
-    else if(a == "-m" || a == "--method") o.method = value(i);
-    else if(a == "--border") o.border = value(i);
-    else if(a == "--preset") o.preset = value(i);
-    else if(a == "--start") o.start = value(i);
-    else if(a == "--update") o.update = value(i);
-    else if(a == "--rule") o.rule = value(i);
-    else if(a == "--descent") o.descent = whole_number(a, i, 0, 100000, "");
-    else if(a == "--polish") o.polish = whole_number(a, i, 0, 100000, "");
-    else if(a == "--polish-time") {
-      o.polish_time = number(a, value(i));
-      if(!(o.polish_time > 0.)) die("option --polish-time: give a positive number of seconds", 2);
-    }
-    else if(a == "--free-border") o.free_border = true;
-    else if(a == "--eta") o.eta = number(a, value(i));
-    else if(a == "--iterations") o.iterations = whole_number(a, i, 0, 10000, "");
-    else if(a == "--threads") o.threads = whole_number(a, i, 0, 1024, "");
-    else if(a == "--size") o.size = whole_number(a, i, 64, 8192, "of pixels ");
-    else if(a == "--up") {
-      const std::string axis = value(i);
-      if(axis != "x" && axis != "y" && axis != "z") die("option --up: give x, y or z", 2);
-      o.up = axis[0] - 'x';
-    }
-    else if(a == "--cut") o.cut = true;
-    else if(a == "--charts") o.charts = true;
-    else if(a == "--atlas") o.atlas = true;
-    else if(a == "--max-stretch") {
-      o.max_stretch = number(a, value(i));
-      if(!(o.max_stretch >= 1.) || !std::isfinite(o.max_stretch)) die("option --max-stretch: give a number of at least 1", 2);
-    }
-    else if(a == "--resolution") o.resolution = whole_number(a, i, 16, 65536, "of texels ");
-    else if(a == "--gutter") {
-      o.gutter = number(a, value(i));
-      if(!(o.gutter >= 0. && o.gutter <= 64.)) die("option --gutter: give a number of texels from 0 to 64", 2);
-    }
-    else if(a == "--no-pictures") o.pictures = false;
-    else if(a == "-q" || a == "--quiet") o.quiet = true;
-    else if(!a.empty() && a[0] == '-') die("unknown option " + a + " (run without arguments for the options)", 2);
-    else if(o.input.empty()) o.input = a;
-    else die("one mesh at a time: unexpected argument " + a, 2);
+  std::string up = "z";
+  bool no_pictures = false;
+  po::options_description described("options");
+  described.add_options()
+    ("help,h", "this text")
+    ("output,o", po::value(&o.output)->value_name("DIR"), "where to write the results (default: MESHNAME_uv)")
+    ("method,m", po::value(&o.method)->value_name("M"),
+     "uopt (default), u1, u0: this package's stretch minimization (U^opt, one step, the start only); "
+     "for comparison, CGAL's mvc, dcm, dap (fixed border), lscm, arap (free border)")
+    ("eta", po::value(&o.eta)->value_name("X"), "weight update exponent, 0 < X <= 1 (default 1)")
+    ("iterations", po::value(&o.iterations)->value_name("N"), "cap on the steps of uopt (default 20)")
+    ("border", po::value(&o.border)->value_name("B"),
+     "square (default, CGAL's corners), ear-aware (square, corners that avoid flattened border faces), "
+     "circle, natural (LSCM's border)")
+    ("preset", po::value(&o.preset)->value_name("P"),
+     "paper (default: the paper's method) or lowest (clamped cotangent start, edge update, 30 descent "
+     "steps: lower stretch for 2-3 times the time)")
+    ("start", po::value(&o.start)->value_name("S"), "start weights of u0/u1/uopt: floater, mvc or cot (clamped cotangent)")
+    ("update", po::value(&o.update)->value_name("U"), "stretch that divides the weights: vertex, symmetric or edge")
+    ("rule", po::value(&o.rule)->value_name("R"), "when a step does not lower the stretch: stop or halve (eta)")
+    ("descent", po::value(&o.descent)->value_name("N"),
+     "then at most N cheap descent steps on Sander's stretch energy (flip-free; default: the preset's, 0 or 30)")
+    ("polish", po::value(&o.polish)->value_name("N"), "then at most N Newton steps on Sander's stretch energy (flip-free)")
+    ("polish-time", po::value(&o.polish_time)->value_name("S"), "time budget of the polish in seconds")
+    ("free-border", po::bool_switch(&o.free_border), "let the polish move the border (never crossing itself)")
+    ("threads", po::value(&o.threads)->value_name("N"), "threads of u0/u1/uopt on large meshes (default 0: one per core)")
+    ("cut", po::bool_switch(&o.cut), "open a closed genus-0 mesh along a seam first")
+    ("charts", po::bool_switch(&o.charts), "parameterize each connected component into its own chart")
+    ("atlas", po::bool_switch(&o.atlas),
+     "any mesh (closed, any genus, several parts, non-manifold, polygons): cut into charts, each flattened "
+     "with a free border, packed into the unit square; the OBJ keeps the input's vertices and faces")
+    ("max-stretch", po::value(&o.max_stretch)->value_name("X"), "atlas: cut further every chart above this L2 stretch (default 1.05)")
+    ("resolution", po::value(&o.resolution)->value_name("N"), "atlas: texels along a side of the texture (default 1024)")
+    ("gutter", po::value(&o.gutter)->value_name("T"), "atlas: texels between charts (default 2)")
+    ("size", po::value(&o.size)->value_name("PX"), "picture size in pixels (default 800)")
+    ("up", po::value(&up)->value_name("A"), "the model's up axis in the pictures: x, y or z (default z)")
+    ("no-pictures", po::bool_switch(&no_pictures), "write no PNG picture")
+    ("quiet,q", po::bool_switch(&o.quiet), "no progress lines");
+  po::options_description all;
+  all.add(described).add_options()("mesh", po::value(&o.input));
+  po::positional_options_description positional;
+  positional.add("mesh", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    po::notify(vm);
+  } catch(const po::error& e) {
+    die(std::string(e.what()) + " (run without arguments for the options)", 2);
   }
-  if(o.input.empty()) { std::cerr << usage; std::exit(2); }
+  if(vm.count("help") || o.input.empty()) {
+    (o.input.empty() && !vm.count("help") ? std::cerr : std::cout)
+      << "usage: smp-parameterize MESH [options]\n  MESH: a triangle mesh (.off, .obj, .ply or .stl), or any polygon mesh with --atlas\n"
+      << described;
+    std::exit(vm.count("help") ? 0 : 2);
+  }
+  // the ranges the parser does not know
+  auto finite = [](const std::string& option, double x) {
+    if(!std::isfinite(x))
+      die("option " + option + ": '" + std::to_string(x) + "' is not a number", 2);
+  };
+  auto whole_number = [](const std::string& option, int n, int low, int high, const std::string& unit) {
+    if(n < low || n > high)
+      die("option " + option + ": give a whole number " + unit + "from " + std::to_string(low) + " to " +
+          std::to_string(high), 2);
+  };
+  for(const auto& [option, x] : {std::pair<const char*, double>{"--eta", o.eta}, {"--polish-time", o.polish_time},
+                                 {"--max-stretch", o.max_stretch}, {"--gutter", o.gutter}})
+    finite(option, x);
+  if(vm.count("descent")) whole_number("--descent", o.descent, 0, 100000, "");
+  whole_number("--polish", o.polish, 0, 100000, "");
+  whole_number("--iterations", o.iterations, 0, 10000, "");
+  whole_number("--threads", o.threads, 0, 1024, "");
+  whole_number("--size", o.size, 64, 8192, "of pixels ");
+  whole_number("--resolution", o.resolution, 16, 65536, "of texels ");
+  if(vm.count("polish-time") && !(o.polish_time > 0.)) die("option --polish-time: give a positive number of seconds", 2);
+  if(up != "x" && up != "y" && up != "z") die("option --up: give x, y or z", 2);
+  o.up = up[0] - 'x';
+  if(!(o.max_stretch >= 1.)) die("option --max-stretch: give a number of at least 1", 2);
+  if(!(o.gutter >= 0. && o.gutter <= 64.)) die("option --gutter: give a number of texels from 0 to 64", 2);
+  o.pictures = !no_pictures;
+
   const std::vector<std::string> methods = {"uopt", "u1", "u0", "mvc", "dcm", "dap", "lscm", "arap"};
   if(std::find(methods.begin(), methods.end(), o.method) == methods.end())
     die("unknown method '" + o.method + "' (uopt, u1, u0, mvc, dcm, dap, lscm, arap)", 2);
