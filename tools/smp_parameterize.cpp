@@ -456,9 +456,10 @@ int main(int argc, char** argv)
               .number_of_iterations(cap).visitor(progress);
     SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater> p(Floater(border), np);
     run_parameterizer(mesh, bhd, p, uv, o.charts, run);
-    run.kept_step = p.report().kept_step;
-    run.polish = p.report().polish;
-    if(run.message.empty()) run.message = p.report().message;
+    const SMP::Stretch_minimizing_report report = p.report(); // a copy: read it once
+    run.kept_step = report.kept_step;
+    run.polish = report.polish;
+    if(run.message.empty()) run.message = report.message;
   } else if(o.method == "mvc") {
     run_parameterizer(mesh, bhd, MVC(border), uv, o.charts, run);
   } else if(o.method == "dcm") {
