@@ -265,7 +265,7 @@ std::vector<Method> all_methods()
   const std::string square = "unit square, arc length";
   const std::string bicgstab = "BiCGSTAB + ILUT (CGAL default)";
   const std::string sparse_lu = "SparseLU";
-#if defined(CGAL_SMP_USE_UMFPACK)
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
   const std::string minimizer_solver = "UMFPACK (AMD below 150k unknowns, METIS above; no refinement)";
 #else
   const std::string minimizer_solver = sparse_lu;

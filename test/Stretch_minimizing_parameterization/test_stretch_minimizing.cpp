@@ -7,6 +7,7 @@
 // and the quality bar of the paper's Mannequin head.
 
 #include "smp_test_util.h"
+#include "solver_configuration_eigen.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -30,6 +31,7 @@
 #include <functional>
 #include <string>
 #include <thread>
+#include <typeinfo>
 #include <vector>
 
 typedef CGAL::Simple_cartesian<double>      Kernel;
@@ -314,7 +316,69 @@ void check_concurrent_copies()
   }
 }
 
-#if defined(CGAL_SMP_USE_UMFPACK)
+// A translation unit built without SuiteSparse (solver_configuration_eigen.cpp) and this one
+// are linked together: when their solver macros differ, the package's types must differ too
+// (else one definition would silently replace the other), and the maps must agree.
+void check_solver_configurations()
+{
+  const std::string here = typeid(Default_smp).name(), there = eigen_configuration_type_name();
+  SMP_CHECK(there.find("with_eigen") != std::string::npos, there);
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS) || defined(CGAL_SMP_USE_CHOLMOD)
+  SMP_CHECK(here != there, "one type for two solver configurations: " << here);
+#else
+  SMP_CHECK(here == there, here << " vs " << there);
+#endif
+  Loaded l = load("mannequin-devil.off");
+  UV_map uv = new_uv(l.mesh, "v:uv_configuration");
+  Default_smp p;
+  SMP_CHECK(SMP::parameterize(l.mesh, p, l.bhd, uv) == SMP::OK, "the parameterization failed");
+  const double other = eigen_configuration_stretch(smp_test::data_file("mannequin-devil.off"));
+  SMP_CHECK(std::abs(p.report().l2_stretch() - other) < 1e-9 * other,
+            p.report().l2_stretch() << " here, " << other << " without SuiteSparse");
+}
+
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
+// The package's UMFPACK wrapper through CGAL's solver traits, as a user would call it: an
+// uncompressed matrix, a solve checked against Eigen's SparseLU, and a singular matrix refused.
+void check_umfpack_lu()
+{
+  typedef CGAL::Eigen_solver_traits<SMP::internal::Umfpack_lu<CGAL::Eigen_sparse_matrix<double>::EigenType> > Umfpack;
+  typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > Sparse_lu;
+  const int n = 50;
+  Umfpack::Matrix A(n, n);
+  Sparse_lu::Matrix A2(n, n);
+  Umfpack::Vector B(n), X(n), X2(n);
+  for(int i = 0; i < n; ++i) {
+    A.set_coef(i, i, 4. + i, true);
+    A2.set_coef(i, i, 4. + i, true);
+    if(i + 1 < n) {
+      A.set_coef(i, i + 1, -1., true);
+      A2.set_coef(i, i + 1, -1., true);
+      A.set_coef(i + 1, i, -2., true);
+      A2.set_coef(i + 1, i, -2., true);
+    }
+    B.set(i, std::sin(double(i)));
+  }
+  Umfpack umfpack;
+  Sparse_lu sparse_lu;
+  double D = 0., D2 = 0.;
+  SMP_CHECK(umfpack.linear_solver(A, B, X, D) && sparse_lu.linear_solver(A2, B, X2, D2), "a solve failed");
+  double error = 0.;
+  for(int i = 0; i < n; ++i)
+    error = (std::max)(error, std::abs(X(i) - X2(i)));
+  SMP_CHECK(error < 1e-12, "UMFPACK and SparseLU differ by " << error);
+
+  Umfpack::Matrix S(2, 2); // rank 1
+  S.set_coef(0, 0, 1., true);
+  S.set_coef(0, 1, 1., true);
+  S.set_coef(1, 0, 1., true);
+  S.set_coef(1, 1, 1., true);
+  Umfpack::Vector b(2), x(2);
+  b.set(0, 1.);
+  b.set(1, 2.);
+  SMP_CHECK(!umfpack.linear_solver(S, b, x, D), "a singular matrix was solved");
+}
+
 // Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from
 // the symbolic estimate and then from the last factorization, hands memory back between steps
 // and frees its factors after each solve and after the call: the maps must be those of Eigen's
@@ -507,7 +571,9 @@ int main()
   check_parallel_for();
   check_threads();
   check_concurrent_copies();
-#if defined(CGAL_SMP_USE_UMFPACK)
+  check_solver_configurations();
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
+  check_umfpack_lu();
   check_large_system();
 #endif
   return smp_test::summary();

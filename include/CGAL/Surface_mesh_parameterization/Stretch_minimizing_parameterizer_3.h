@@ -8,6 +8,8 @@
 // of the method and of its options (much of its length); the iteration's parts (weights,
 // stretch, solver, polish) live in internal headers.
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Square_border_parameterizer_3.h>
@@ -44,6 +46,7 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
 ///
@@ -110,14 +113,18 @@ namespace Surface_mesh_parameterization {
 ///   CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
 ///                                             Eigen::COLAMDOrdering<int> > >
 /// \endcode
-///         or, when the macro `CGAL_SMP_USE_UMFPACK` is defined (the package's CMake target
-///         defines it if SuiteSparse's UMFPACK is found), faster here (the benchmark says by how much), an internal
-///         subclass of `Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType>`, used with
+///         or, when CGAL's macro `CGAL_SMP_USE_SPARSESUITE_SOLVERS` is defined (as for CGAL's
+///         ARAP and Orbifold Tutte parameterizers; the package's CMake target defines it if
+///         SuiteSparse's UMFPACK is found; link UMFPACK), faster here (the benchmark says by how
+///         much), an internal wrapper of UMFPACK's LU, used with
 ///         AMD ordering below 150,000 unknowns and METIS above, without UMFPACK's iterative
 ///         refinement, and frugal with memory: its work area is sized from the symbolic analysis
 ///         and then from the previous factorization, and its factors are freed as soon as they
 ///         have served (the benchmark measures the peak memory of a call).
-///         A `Eigen::UmfPackLU` given here is ordered and run without refinement the same way.
+///         Translation units built with and without the macro get distinct types (an inline
+///         namespace per configuration), never two definitions of one.
+///         With the macro, a `Eigen::UmfPackLU` given here is ordered and run without refinement
+///         the same way.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
 /// \sa `CGAL::Surface_mesh_parameterization::Stretch_minimizing_report`
@@ -534,6 +541,7 @@ private:
   std::shared_ptr<std::mutex> m_solver_mutex; // held by a call: copies share m_solver_traits' solver
 };
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 

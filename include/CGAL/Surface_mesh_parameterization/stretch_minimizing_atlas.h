@@ -4,6 +4,8 @@
 #ifndef CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_ATLAS_H
 #define CGAL_SURFACE_MESH_PARAMETERIZATION_STRETCH_MINIMIZING_ATLAS_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/Atlas.h>
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/build_atlas.h>
@@ -25,6 +27,7 @@
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
 ///
@@ -222,6 +225,7 @@ Atlas_report make_atlas(const PolygonMesh& pmesh, HalfedgeUVMap uv_map, FaceChar
   return atlas.report;
 }
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL
 

@@ -28,6 +28,8 @@
 // state of one polish. The energy of one face, the bounds of a flip-free step and the proxy's
 // solver are in headers of their own.
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_face_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flip_free_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_proxy_solver.h>
@@ -49,6 +51,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // How a step finds its direction.
 enum class Sander_polish_direction { NEWTON, DIRICHLET_PROXY };
@@ -590,6 +593,7 @@ private:
   Flat_stretch m_stretch;
 };
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -7,6 +7,8 @@
 // The solver of the polisher's fixed quadratic proxy (the cotangent Laplacian of the 3D mesh),
 // factored once per polish and solved at every descent step.
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <Eigen/Core>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -17,6 +19,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // Factors the proxy once and solves it at every descent step: with Eigen's SimplicialLDLT, or,
 // when SuiteSparse is used and the proxy is large, with CHOLMOD's supernodal Cholesky (its
@@ -69,6 +72,7 @@ private:
 #endif
 };
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -4,8 +4,11 @@
 #ifndef CGAL_SMP_INTERNAL_UMFPACK_LU_H
 #define CGAL_SMP_INTERNAL_UMFPACK_LU_H
 
-// Eigen's UmfPackLU, set up for a sequence of factorizations of one pattern, with an eye on
-// the peak memory (measured by the benchmark on the Loop refinements of the mannequin head):
+// SuiteSparse's UMFPACK LU behind the interface of an Eigen sparse solver (what
+// `CGAL::Eigen_solver_traits` calls: compute, analyzePattern, factorize, solve, info), set up
+// for a sequence of factorizations of one pattern, with an eye on the peak memory (the
+// benchmark measures it on the Loop refinements of the mannequin head). It calls UMFPACK's C
+// interface itself, where Eigen's `UmfPackLU` keeps what this needs in protected members:
 // - UMFPACK's iterative refinement is off (Eigen leaves it on; it made each solve several times
 //   slower for no gain in accuracy here);
 // - METIS orders large systems (far fewer flops and less memory than AMD on large meshes; on
@@ -20,12 +23,15 @@
 //   blocks below 32 MB in its heap, which raised the peak;
 // - the factors are freed as soon as they have served (`release_numeric()` after the solve: the
 //   stretch evaluation and the weight update that follow would otherwise add to them), and
-//   `release()` frees the analysis once the iteration is over.
+//   `release()` frees the analysis once the iteration is over;
+// - the columns of a right-hand side are solved in parallel (`solve_columns()`).
 
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
-#include <Eigen/Dense>
-#include <Eigen/UmfPackSupport>
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+
+#include <umfpack.h>
 
 #include <algorithm>
 #include <type_traits>
@@ -39,107 +45,186 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-template <typename Matrix_>
-class Umfpack_lu : public Eigen::UmfPackLU<Matrix_>
+// `Matrix` is `Eigen::SparseMatrix<double>` (column-major, int indices: UMFPACK's `di` interface).
+// The matrix given to `factorize()` must outlive the solves that follow it.
+template <typename Matrix>
+class Umfpack_lu
 {
-  typedef Eigen::UmfPackLU<Matrix_>                          Base;
+  static_assert(std::is_same<typename Matrix::Scalar, double>::value &&
+                std::is_same<typename Matrix::StorageIndex, int>::value && !Matrix::IsRowMajor,
+                "Umfpack_lu takes a column-major Eigen::SparseMatrix<double> with int indices");
 
 public:
+  typedef Matrix                                             MatrixType;
+  typedef double                                             Scalar;
+  typedef int                                                StorageIndex;
+
   // unknowns from which METIS orders the system
   static constexpr long metis_threshold = 150000;
 
-  template <typename Matrix>
+  Umfpack_lu()
+  {
+    umfpack_di_defaults(m_control);
+    m_control[UMFPACK_IRSTEP] = 0;
+  }
+  // the factors are UMFPACK's: one owner (Eigen_solver_traits holds its solver by pointer)
+  Umfpack_lu(const Umfpack_lu&) = delete;
+  Umfpack_lu& operator=(const Umfpack_lu&) = delete;
+  ~Umfpack_lu() { release(); }
+
+  Eigen::ComputationInfo info() const { return m_info; }
+  Eigen::Index rows() const { return m_n; }
+  Eigen::Index cols() const { return m_n; }
+
+  void compute(const Matrix& A)
+  {
+    analyzePattern(A);
+    if(m_info == Eigen::Success)
+      factorize(A);
+  }
+
   void analyzePattern(const Matrix& A)
   {
-    this->umfpackControl()(UMFPACK_IRSTEP) = 0;
-    const bool metis = A.rows() >= metis_threshold;
-    this->umfpackControl()(UMFPACK_ORDERING) = metis ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
-    Base::analyzePattern(A);
-    if(metis && this->info() != Eigen::Success) {
-      this->umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_AMD;
-      Base::analyzePattern(A);
+    release();
+    const Matrix& C = compressed(A);
+    m_n = C.rows();
+    if(C.rows() != C.cols()) {
+      m_info = Eigen::InvalidInput;
+      return;
     }
+    const bool metis = m_n >= metis_threshold;
+    m_control[UMFPACK_ORDERING] = metis ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
+    int status = symbolic(C);
+    if(metis && status != UMFPACK_OK) {
+      m_control[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
+      status = symbolic(C);
+    }
+    m_info = status == UMFPACK_OK ? Eigen::Success : Eigen::NumericalIssue;
     m_large = metis;
     m_work_units = 0.;
     // With the symmetric strategy (diagonal pivots, as on these diagonally dominant systems),
     // the estimate of the factors is close; otherwise UMFPACK's default applies.
-    if(this->info() == Eigen::Success &&
-       this->m_umfpackInfo(UMFPACK_STRATEGY_USED) == UMFPACK_STRATEGY_SYMMETRIC) {
+    if(m_info == Eigen::Success && m_report[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC) {
       // 5% above the factors: the frontal matrices share the area (2% on top, measured)
-      m_work_units = (std::max)(1.05 * this->m_umfpackInfo(UMFPACK_SYMMETRIC_LUNZ),
-                                this->m_umfpackInfo(UMFPACK_VARIABLE_INIT_ESTIMATE));
+      m_work_units = (std::max)(1.05 * m_report[UMFPACK_SYMMETRIC_LUNZ],
+                                m_report[UMFPACK_VARIABLE_INIT_ESTIMATE]);
     }
   }
 
-  template <typename Matrix>
   void factorize(const Matrix& A)
   {
-    // a negative value is an absolute size, in UMFPACK's units
-    this->umfpackControl()(UMFPACK_ALLOC_INIT) = m_work_units > 0. ? -m_work_units : 0.7;
     release_numeric(); // before the new one is made, not while
+    if(m_symbolic == nullptr || A.rows() != m_n || A.cols() != m_n) {
+      m_info = Eigen::InvalidInput;
+      return;
+    }
+    m_matrix = &compressed(A);
+    // a negative value is an absolute size, in UMFPACK's units
+    m_control[UMFPACK_ALLOC_INIT] = m_work_units > 0. ? -m_work_units : 0.7;
 #if defined(__GLIBC__)
     if(m_large)
       malloc_trim(0); // cheap next to the factorization
 #endif
-    Base::factorize(A);
-    if(this->info() == Eigen::Success && this->m_umfpackInfo(UMFPACK_VARIABLE_PEAK) > 0.)
-      m_work_units = this->m_umfpackInfo(UMFPACK_VARIABLE_PEAK);
+    const int status = umfpack_di_numeric(m_matrix->outerIndexPtr(), m_matrix->innerIndexPtr(),
+                                          m_matrix->valuePtr(), m_symbolic, &m_numeric, m_control, m_report);
+    if(status != UMFPACK_OK) { // a singular matrix gets factors too: they are not used
+      release_numeric();
+      m_info = Eigen::NumericalIssue;
+      return;
+    }
+    m_info = Eigen::Success;
+    if(m_report[UMFPACK_VARIABLE_PEAK] > 0.)
+      m_work_units = m_report[UMFPACK_VARIABLE_PEAK];
+  }
+
+  // A^{-1} b after `factorize()`, one column after the other.
+  template <typename Rhs>
+  Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime>
+  solve(const Eigen::MatrixBase<Rhs>& b) const
+  {
+    Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> X(b.rows(), b.cols());
+    const Eigen::MatrixXd B = b;
+    if(!solve_columns(B, X, 1u))
+      m_info = Eigen::NumericalIssue;
+    return X;
   }
 
   // X = A^{-1} B after `factorize()`, the columns on up to `threads` threads: UMFPACK's solve
   // only reads the factors, and each column gets its own workspace and report. False if a
   // solve fails.
-  bool solve_columns(const Eigen::MatrixXd& B, Eigen::MatrixXd& X, unsigned int threads) const
+  template <typename Result>
+  bool solve_columns(const Eigen::MatrixXd& B, Result& X, unsigned int threads) const
   {
-    typedef typename Base::StorageIndex Index;
-    if constexpr(!std::is_same<typename Base::Scalar, double>::value || !std::is_same<Index, int>::value) {
-      X = this->solve(B);
-      return this->info() == Eigen::Success;
-    } else {
-      const Eigen::Index n = B.rows(), columns = B.cols();
-      X.resize(n, columns);
-      if(!this->m_numeric || this->mp_matrix.rows() != n)
-        return false;
-      // W holds n values without iterative refinement, 5n with it
-      const Eigen::Index w_size = this->m_control(UMFPACK_IRSTEP) > 0. ? 5 * n : n;
-      // workspaces allocated here: the threads must not throw
-      std::vector<char> ok(std::size_t(columns), 0);
-      std::vector<std::vector<int> > wi(std::size_t(columns), std::vector<int>(static_cast<std::size_t>(n)));
-      std::vector<std::vector<double> > w(std::size_t(columns), std::vector<double>(static_cast<std::size_t>(w_size)));
-      parallel_for(std::size_t(columns), n >= Eigen::Index(parallel_grain) ? threads : 1u, 1,
-                   [&](std::size_t begin, std::size_t end) {
-        double info[UMFPACK_INFO];
-        for(std::size_t j = begin; j < end; ++j)
-          ok[j] = umfpack_di_wsolve(UMFPACK_A, this->mp_matrix.outerIndexPtr(), this->mp_matrix.innerIndexPtr(),
-                                    this->mp_matrix.valuePtr(), X.col(Eigen::Index(j)).data(),
-                                    B.col(Eigen::Index(j)).data(), this->m_numeric, this->m_control.data(),
-                                    info, wi[j].data(), w[j].data()) == UMFPACK_OK;
-      });
-      return std::find(ok.begin(), ok.end(), 0) == ok.end();
-    }
+    const Eigen::Index columns = B.cols();
+    X.resize(m_n, columns);
+    if(m_numeric == nullptr || B.rows() != m_n)
+      return false;
+    // workspaces allocated here: the threads must not throw
+    const std::size_t c = static_cast<std::size_t>(columns), n = static_cast<std::size_t>(m_n);
+    std::vector<char> ok(c, 0);
+    std::vector<std::vector<int> > wi(c, std::vector<int>(n));
+    std::vector<std::vector<double> > w(c, std::vector<double>(n));
+    parallel_for(std::size_t(columns), m_n >= Eigen::Index(parallel_grain) ? threads : 1u, 1,
+                 [&](std::size_t begin, std::size_t end) {
+      double report[UMFPACK_INFO];
+      for(std::size_t j = begin; j < end; ++j)
+        ok[j] = umfpack_di_wsolve(UMFPACK_A, m_matrix->outerIndexPtr(), m_matrix->innerIndexPtr(),
+                                  m_matrix->valuePtr(), X.col(Eigen::Index(j)).data(),
+                                  B.col(Eigen::Index(j)).data(), m_numeric, m_control, report,
+                                  wi[j].data(), w[j].data()) == UMFPACK_OK;
+    });
+    return std::find(ok.begin(), ok.end(), 0) == ok.end();
   }
 
   // Frees the numeric factorization; the next use starts with `factorize()`.
   void release_numeric()
   {
-    if(this->m_numeric)
-      Eigen::umfpack_free_numeric(&this->m_numeric, typename Base::Scalar(), typename Base::StorageIndex());
-    this->m_factorizationIsOk = false;
+    if(m_numeric != nullptr)
+      umfpack_di_free_numeric(&m_numeric);
+    m_numeric = nullptr;
   }
 
   // Frees the symbolic and numeric factorizations; the next use starts with `analyzePattern()`.
   void release()
   {
     release_numeric();
-    if(this->m_symbolic)
-      Eigen::umfpack_free_symbolic(&this->m_symbolic, typename Base::Scalar(), typename Base::StorageIndex());
-    this->m_isInitialized = false;
-    this->m_analysisIsOk = false;
+    if(m_symbolic != nullptr)
+      umfpack_di_free_symbolic(&m_symbolic);
+    m_symbolic = nullptr;
+    m_matrix = nullptr;
+    m_own = Matrix();
     m_work_units = 0.;
   }
 
 private:
-  double m_work_units = 0.; // size of the work area of the next factorization (0: UMFPACK's default)
+  // `A` itself when compressed, else a compressed copy (UMFPACK reads compressed columns)
+  const Matrix& compressed(const Matrix& A)
+  {
+    if(A.isCompressed())
+      return A;
+    m_own = A;
+    m_own.makeCompressed();
+    return m_own;
+  }
+
+  int symbolic(const Matrix& C)
+  {
+    if(m_symbolic != nullptr)
+      umfpack_di_free_symbolic(&m_symbolic);
+    m_symbolic = nullptr;
+    return umfpack_di_symbolic(int(m_n), int(m_n), C.outerIndexPtr(), C.innerIndexPtr(), C.valuePtr(),
+                               &m_symbolic, m_control, m_report);
+  }
+
+  double m_control[UMFPACK_CONTROL];
+  double m_report[UMFPACK_INFO];
+  void* m_symbolic = nullptr;
+  void* m_numeric = nullptr;
+  const Matrix* m_matrix = nullptr; // the factorized matrix (read again by the solves)
+  Matrix m_own;                     // its compressed copy when it was not compressed
+  Eigen::Index m_n = 0;
+  mutable Eigen::ComputationInfo m_info = Eigen::InvalidInput;
+  double m_work_units = 0.;         // size of the work area of the next factorization (0: UMFPACK's default)
   bool m_large = false;
 };
 

@@ -4,6 +4,8 @@
 #ifndef CGAL_SMP_INTERNAL_WEIGHTED_LAPLACIAN_SYSTEM_H
 #define CGAL_SMP_INTERNAL_WEIGHTED_LAPLACIAN_SYSTEM_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
@@ -20,6 +22,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // The system sum_j w_ij (u_i - u_j) = 0 over the interior vertices, border vertices moved to
 // the right-hand side, each row divided by its weight sum (same solution, better scaled).
@@ -194,6 +197,7 @@ private:
   bool m_analysed = false;
 };
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

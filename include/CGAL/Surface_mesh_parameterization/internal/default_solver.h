@@ -4,25 +4,33 @@
 #ifndef CGAL_SMP_INTERNAL_DEFAULT_SOLVER_H
 #define CGAL_SMP_INTERNAL_DEFAULT_SOLVER_H
 
-// The default sparse solver of the package. With CGAL_SMP_USE_UMFPACK defined (the CMake target
-// defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's
-// SparseLU with COLAMD ordering. UMFPACK without iterative refinement is the faster of the two
-// on the benchmark's meshes (benchmark/ measures by how much).
+// The default sparse solver of the package. With CGAL's own macro
+// CGAL_SMP_USE_SPARSESUITE_SOLVERS defined (the package's CMake target defines it when
+// SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's SparseLU with
+// COLAMD ordering. UMFPACK without iterative refinement is the faster of the two on the
+// benchmark's meshes (benchmark/ measures by how much). The type depends on the macro: it is
+// declared in the solver configuration's namespace (solver_configuration.h says why).
+
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Dense>
 #include <Eigen/SparseLU>
-#if defined(CGAL_SMP_USE_UMFPACK)
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
+#include <Eigen/UmfPackSupport>
+#endif
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 #include <CGAL/Surface_mesh_parameterization/internal/Umfpack_lu.h>
 #endif
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
-#if defined(CGAL_SMP_USE_UMFPACK)
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 typedef CGAL::Eigen_solver_traits<Umfpack_lu<Eigen_sparse_matrix<double>::EigenType> > Default_solver_traits;
 #else
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType,
@@ -58,7 +66,7 @@ template <typename Solver>
 void release_factors(Solver&)
 { }
 
-#if defined(CGAL_SMP_USE_UMFPACK)
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 template <typename Matrix, typename Eigen_matrix>
 void analyze_pattern(Eigen::UmfPackLU<Eigen_matrix>& solver, const Matrix& A)
 {
@@ -98,6 +106,7 @@ void release_factors(Umfpack_lu<Eigen_matrix>& solver)
 }
 #endif
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

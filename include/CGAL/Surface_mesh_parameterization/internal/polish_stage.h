@@ -7,6 +7,8 @@
 // The polish stage of the stretch minimizer, after U^opt: the polisher run on the component,
 // its steps reported like the others.
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_report.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
@@ -24,6 +26,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // What a visitor sees of the map of step h, measured by `s`.
 inline Stretch_minimizing_step make_step(std::size_t h, const Flat_stretch_summary& s,
@@ -261,6 +264,7 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
     fit_in_unit_square(uv);
 }
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

@@ -9,6 +9,8 @@
 // fixed square border, then the polish with a free border (flip-free, the border never
 // crossing itself). A chart of one triangle is laid out isometrically.
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
@@ -30,6 +32,7 @@
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // A flattened chart: its triangles, the chart vertex of each of their corners, and the uv of
 // every chart vertex, in the orientation of the input's triangles (positive signed areas).
@@ -149,6 +152,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   chart.ok = std::isfinite(chart.l2);
 }
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization
 } // namespace CGAL

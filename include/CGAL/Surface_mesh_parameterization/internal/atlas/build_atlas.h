@@ -8,6 +8,8 @@
 // bound, packed (the longest cut across while the square is poorly filled), then written per
 // polygon corner with the report's measures. make_atlas() reads the input and calls it.
 
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
 #include <CGAL/Surface_mesh_parameterization/Atlas.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Atlas_input.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
@@ -33,6 +35,7 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 
 namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // Tells the two versions of make_atlas() apart: the third argument of the soup's is a sequence
 // of named parameters (CGAL's or the package's, which derive from CGAL's), the mesh's a property map.
@@ -393,6 +396,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   }
 }
 
+CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 
 } // namespace Surface_mesh_parameterization
