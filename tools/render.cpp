@@ -9,12 +9,25 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdint>
 #include <memory>
 
 namespace smp_tools {
 
 namespace {
+
+// Writes `surface` to `file` through a temporary name, so that a failure never leaves a PNG
+// that looks complete.
+bool write_png_atomically(cairo_surface_t* surface, const std::string& file)
+{
+  const std::string temporary = file + ".part";
+  if(cairo_surface_write_to_png(surface, temporary.c_str()) == CAIRO_STATUS_SUCCESS &&
+     std::rename(temporary.c_str(), file.c_str()) == 0)
+    return true;
+  std::remove(temporary.c_str());
+  return false;
+}
 
 // Cairo ARGB32 image from RGBA rows stored bottom-up (OpenGL's order).
 bool write_rgba_png(const std::string& file, const std::vector<unsigned char>& rgba, int width, int height)
@@ -32,7 +45,7 @@ bool write_rgba_png(const std::string& file, const std::vector<unsigned char>& r
       dst[x] = 0xff000000u | (std::uint32_t(src[4 * x]) << 16) | (std::uint32_t(src[4 * x + 1]) << 8) | src[4 * x + 2];
   }
   cairo_surface_mark_dirty(surface);
-  const bool ok = cairo_surface_write_to_png(surface, file.c_str()) == CAIRO_STATUS_SUCCESS;
+  const bool ok = write_png_atomically(surface, file);
   cairo_surface_destroy(surface);
   return ok;
 }
@@ -125,7 +138,7 @@ bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int
     }
   }
   cairo_destroy(cr);
-  const bool ok = cairo_surface_write_to_png(surface, file.c_str()) == CAIRO_STATUS_SUCCESS;
+  const bool ok = write_png_atomically(surface, file);
   cairo_surface_destroy(surface);
   return ok;
 }

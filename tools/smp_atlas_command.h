@@ -16,8 +16,9 @@ int run_atlas(const Options& o)
   check_input_file(o);
   std::vector<Point_3> points;
   std::vector<std::vector<std::size_t> > polygons;
-  if(!CGAL::IO::read_polygon_soup(o.input, points, polygons, CGAL::parameters::verbose(false)) || polygons.empty())
-    die("cannot read polygons from " + o.input);
+  std::string error;
+  if(!smp_tools::read_soup(o.input, points, polygons, error))
+    die(error);
   const double read_seconds = seconds_since(start);
   if(!o.quiet)
     std::cout << "read " << points.size() << " vertices, " << polygons.size() << " polygons" << std::endl;

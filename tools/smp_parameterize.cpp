@@ -6,6 +6,7 @@
 // Run without arguments for the options.
 
 #include "render.h"
+#include "smp_input.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -29,7 +30,6 @@
 #include <CGAL/Surface_mesh_parameterization/parameterize_components.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
-#include <CGAL/IO/polygon_soup_io.h>
 
 #include <boost/program_options.hpp>
 
@@ -43,6 +43,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -386,7 +387,7 @@ void write_pictures(const fs::path& dir, const std::string& name, const smp_tool
 
 #include "smp_atlas_command.h"
 
-int main(int argc, char** argv)
+int run(int argc, char** argv)
 {
   const Options o = parse(argc, argv);
   const auto start = std::chrono::steady_clock::now();
@@ -397,8 +398,12 @@ int main(int argc, char** argv)
   // ---- read and check
   check_input_file(o);
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(o.input, mesh, CGAL::parameters::verbose(false)) || faces(mesh).empty())
-    die("cannot read a polygon mesh from " + o.input + " (a soup with non-manifold edges, or an inconsistent orientation: add --atlas)");
+  std::string error;
+  std::size_t isolated = 0;
+  if(!smp_tools::read_mesh(o.input, mesh, error, isolated))
+    die(error);
+  if(isolated > 0 && !o.quiet)
+    std::cout << "removed " << isolated << " isolated vertices (of no face)" << std::endl;
   const double read_seconds = seconds_since(start);
   if(!CGAL::is_triangle_mesh(mesh))
     die(o.input + " is not a triangle mesh: add --atlas (it takes polygons), or triangulate it first");
@@ -542,7 +547,8 @@ int main(int argc, char** argv)
   // ---- report
   Json report;
   report["input"] = o.input;
-  report["mesh"] = {{"vertices", input_vertices}, {"faces", input_faces}, {"boundaries", loops.size()},
+  report["mesh"] = {{"vertices", input_vertices}, {"faces", input_faces}, {"isolated_vertices_removed", isolated},
+                    {"boundaries", loops.size()},
                     {"components", components}, {"cut_open", o.cut}};
   report["method"] = o.method;
   report["options"] = {{"border", o.border}, {"preset", o.preset}, {"start", o.start}, {"update", o.update},
@@ -575,4 +581,16 @@ int main(int argc, char** argv)
               << "wrote " << fs::absolute(dir).string() << "/{" << name << ".obj, report.json"
               << (o.pictures ? ", *.png" : "") << "}" << std::endl;
   return EXIT_SUCCESS;
+}
+
+int main(int argc, char** argv)
+{
+  // outputs are written atomically (write_atomically): an error here never leaves a partial file
+  try {
+    return run(argc, argv);
+  } catch(const std::bad_alloc&) {
+    die("out of memory: the mesh is too large for the memory available");
+  } catch(const std::exception& e) {
+    die(std::string("unexpected error: ") + e.what());
+  }
 }

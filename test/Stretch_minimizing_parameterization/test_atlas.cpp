@@ -19,6 +19,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -276,6 +277,8 @@ void run(const Soup& s, double max_l2)
   SMP_CHECK(c.not_positive == 0, s.name << ": " << c.not_positive << " triangles flipped or flat in uv");
   SMP_CHECK(c.overlaps == 0, s.name << ": " << c.overlaps << " overlapping pairs");
   SMP_CHECK(c.wrong_size == 0, s.name);
+  SMP_CHECK(std::all_of(atlas.chart.begin(), atlas.chart.end(), [&](std::size_t k) { return k < r.charts; }),
+            s.name << ": a chart index out of range");
   SMP_CHECK(r.flipped_faces == 0, s.name << ": " << r.flipped_faces);
   SMP_CHECK(r.l2_stretch >= 1. - 1e-9 && r.l2_stretch <= max_l2, s.name << ": L2 " << r.l2_stretch);
   SMP_CHECK(r.utilization > 0. && r.utilization <= 1., s.name << ": utilization " << r.utilization);
@@ -385,6 +388,21 @@ void progress()
             << flattened << " of " << known << " charts flattened before the packing");
 }
 
+// Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
+// two corners) has no triangle to chart; its polygons are still in a chart that exists.
+void only_flat_polygons()
+{
+  std::vector<Point> points(5, Point(-0.75, -0.75, -0.75));
+  points.emplace_back(1, 2, 3);
+  std::vector<std::vector<std::size_t> > polygons = {{0, 1}, {2, 3, 4}, {4, 5}, {5, 5, 5}};
+  const SMP::Atlas a = SMP::make_atlas(points, polygons);
+  SMP_CHECK(a.report.status == SMP::OK && a.report.charts == 1 && a.chart.size() == polygons.size() &&
+            std::all_of(a.chart.begin(), a.chart.end(), [&](std::size_t c) { return c < a.report.charts; }),
+            "only flat polygons: " << a.report.charts << " charts, " << a.report.message);
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    SMP_CHECK(a.uv.size() == polygons.size() && a.uv[f].size() == polygons[f].size(), "only flat polygons: corners lost");
+}
+
 int main(int argc, char** argv)
 {
   if(argc > 1) { // a mesh given on the command line
@@ -396,6 +414,7 @@ int main(int argc, char** argv)
     return smp_test::summary();
   }
   bad_input();
+  only_flat_polygons();
   progress();
   mesh_atlas<CGAL::Surface_mesh<Point> >(torus(40, 16, true), "Surface_mesh");
   mesh_atlas<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > >(torus(40, 16, false), "Polyhedron_3");

@@ -3,7 +3,7 @@
 // data it does not own untouched (uv of other components, of isolated vertices, and of the
 // interior when the error is raised before any solve).
 
-#include "smp_test_util.h"
+#include "smp_test_mesh.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -31,14 +31,7 @@
 #include <utility>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double>                       Kernel;
-typedef Kernel::Point_2                                      Point_2;
-typedef Kernel::Point_3                                      Point_3;
-typedef Kernel::Vector_3                                     Vector_3;
-typedef CGAL::Surface_mesh<Point_3>                          Mesh;
-typedef boost::graph_traits<Mesh>::vertex_descriptor         vertex_descriptor;
-typedef boost::graph_traits<Mesh>::halfedge_descriptor       halfedge_descriptor;
-typedef boost::graph_traits<Mesh>::face_descriptor           face_descriptor;
+using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace PMP = CGAL::Polygon_mesh_processing;
@@ -51,33 +44,8 @@ typedef SMP::Stretch_minimizing_parameterizer_3<
 
 namespace {
 
-const Point_2 sentinel(-7., -7.);
+const Point_2 sentinel = smp_test::unwritten_uv;
 const double nan_value = std::numeric_limits<double>::quiet_NaN();
-
-// ---------------------------------------------------------------------------------------------
-// Maps handed to parameterize(): uv set to the sentinel, vimap numbering every vertex 0..n-1,
-// vpmap false.
-struct Maps
-{
-  Mesh::Property_map<vertex_descriptor, Point_2> uv;
-  Mesh::Property_map<vertex_descriptor, int> vi;
-  Mesh::Property_map<vertex_descriptor, bool> vp;
-};
-
-Maps make_maps(Mesh& m)
-{
-  Maps maps;
-  maps.uv = m.add_property_map<vertex_descriptor, Point_2>("v:test_uv", sentinel).first;
-  maps.vi = m.add_property_map<vertex_descriptor, int>("v:test_index", -1).first;
-  maps.vp = m.add_property_map<vertex_descriptor, bool>("v:test_parameterized", false).first;
-  int i = 0;
-  for(vertex_descriptor v : vertices(m)) {
-    put(maps.uv, v, sentinel);
-    put(maps.vi, v, i++);
-    put(maps.vp, v, false);
-  }
-  return maps;
-}
 
 bool is_sentinel(const Point_2& p) { return p.x() == sentinel.x() && p.y() == sentinel.y(); }
 
@@ -209,56 +177,11 @@ void check_success(const std::string& name, const Mesh& m, halfedge_descriptor b
   }
 }
 
-Mesh load(const std::string& name)
-{
-  Mesh m;
-  const bool ok = CGAL::IO::read_polygon_mesh(smp_test::data_file(name), m);
-  SMP_CHECK(ok && !faces(m).empty(), "cannot read " << name);
-  return m;
-}
-
-halfedge_descriptor border_halfedge_from(const Mesh& m, vertex_descriptor s)
-{
-  for(halfedge_descriptor h : halfedges(m))
-    if(is_border(h, m) && source(h, m) == s)
-      return h;
-  return boost::graph_traits<Mesh>::null_halfedge();
-}
-
 std::size_t number_of_boundaries(const Mesh& m)
 {
   std::vector<halfedge_descriptor> cycles;
   PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
   return cycles.size();
-}
-
-// A planar (nx x ny)-cell grid at z = 0, cell (i, j) split along (i, j)-(i+1, j+1),
-// faces counterclockwise seen from +z; vertex (i, j) is v[j * (nx + 1) + i] at (i, j, 0).
-struct Grid
-{
-  Mesh mesh;
-  std::vector<vertex_descriptor> v;
-  int nx = 0;
-  vertex_descriptor at(int i, int j) const { return v[std::size_t(j * (nx + 1) + i)]; }
-};
-
-Grid make_grid(int nx, int ny, bool quads = false)
-{
-  Grid g;
-  g.nx = nx;
-  for(int j = 0; j <= ny; ++j)
-    for(int i = 0; i <= nx; ++i)
-      g.v.push_back(g.mesh.add_vertex(Point_3(i, j, 0)));
-  for(int j = 0; j < ny; ++j)
-    for(int i = 0; i < nx; ++i) {
-      if(quads) {
-        g.mesh.add_face(g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1), g.at(i, j + 1));
-      } else {
-        g.mesh.add_face(g.at(i, j), g.at(i + 1, j), g.at(i + 1, j + 1));
-        g.mesh.add_face(g.at(i, j), g.at(i + 1, j + 1), g.at(i, j + 1));
-      }
-    }
-  return g;
 }
 
 // Signed area of every face of a mesh lying in the plane z = 0.
@@ -327,7 +250,7 @@ void test_empty_mesh()
 // bear (genus 0) and on a tetrahedron built here.
 void test_closed_mesh()
 {
-  Mesh bear = load("bear.off");
+  Mesh bear = read_mesh("bear.off");
   SMP_CHECK(number_of_boundaries(bear) == 0, "bear.off is expected to be closed");
   {
     Maps maps = make_maps(bear);
@@ -368,7 +291,7 @@ void test_closed_mesh()
 // before anything is written.
 void test_not_a_border_halfedge()
 {
-  Mesh m = load("nefertiti.off");
+  Mesh m = read_mesh("nefertiti.off");
   const halfedge_descriptor b = PMP::longest_border(m).first;
   halfedge_descriptor inner = Mesh::null_halfedge();
   for(halfedge_descriptor h : halfedges(m))
@@ -396,7 +319,7 @@ void test_not_a_border_halfedge()
 void test_non_triangular()
 {
   {
-    Mesh m = load("nefertiti.off");
+    Mesh m = read_mesh("nefertiti.off");
     const halfedge_descriptor bhd = PMP::longest_border(m).first;
     // an edge whose two ends are inner vertices (the merged face stays a proper quad)
     halfedge_descriptor j = Mesh::null_halfedge();
@@ -424,7 +347,7 @@ void test_non_triangular()
     check_untouched("grid of quads", g.mesh, bhd, maps, p, false);
   }
   {
-    Mesh m = load("nefertiti.off");
+    Mesh m = read_mesh("nefertiti.off");
     const halfedge_descriptor bhd = PMP::longest_border(m).first;
     Grid g = make_grid(2, 2, true);
     CGAL::copy_face_graph(g.mesh, m);
@@ -446,7 +369,7 @@ void test_non_triangular()
 // such indexing.
 void test_isolated_vertices()
 {
-  Mesh disk = load("nefertiti.off");
+  Mesh disk = read_mesh("nefertiti.off");
   const halfedge_descriptor disk_bhd = PMP::longest_border(disk).first;
   Maps disk_maps = make_maps(disk);
   {
@@ -582,7 +505,7 @@ void test_coincident_vertices()
 // (a translated copy) must not matter: OK, and the same uv as without it.
 void test_non_finite_coordinates()
 {
-  const Mesh disk = load("nefertiti.off");
+  const Mesh disk = read_mesh("nefertiti.off");
   const halfedge_descriptor bhd = PMP::longest_border(disk).first;
   const std::vector<vertex_descriptor> inner = interior(disk, bhd);
   SMP_CHECK(!inner.empty(), "nefertiti has no inner vertex");
@@ -641,7 +564,7 @@ void test_non_finite_coordinates()
 // gives the same uv as the original, since the stretch is invariant under rigid motions.
 void test_several_components()
 {
-  Mesh m = load("nefertiti.off");
+  Mesh m = read_mesh("nefertiti.off");
   const halfedge_descriptor bhd1 = PMP::longest_border(m).first;
   Mesh copy = m;
   for(vertex_descriptor v : vertices(copy)) { // rotation by 90 degrees about z, then translation
@@ -728,7 +651,7 @@ void test_single_triangle()
 // error does not stick to the parameterizer.
 void test_eta()
 {
-  Mesh m = load("nefertiti.off");
+  Mesh m = read_mesh("nefertiti.off");
   const halfedge_descriptor bhd = PMP::longest_border(m).first;
   const double bad[] = {0., -0.5, std::nextafter(1., 2.), 2., nan_value,
                         std::numeric_limits<double>::infinity()};

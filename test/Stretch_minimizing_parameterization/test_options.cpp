@@ -6,7 +6,7 @@
 // combination on every bundled disk mesh: no flipped face at any step, and the order of the
 // results that the options promise. (The polisher itself is tested in test_polish.)
 
-#include "smp_test_util.h"
+#include "smp_test_mesh.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -23,13 +23,7 @@
 #include <string>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double>      Kernel;
-typedef Kernel::Point_2                     Point_2;
-typedef Kernel::Point_3                     Point_3;
-typedef CGAL::Surface_mesh<Point_3>         Mesh;
-typedef Mesh::Vertex_index                  vertex_descriptor;
-typedef Mesh::Halfedge_index                halfedge_descriptor;
-typedef Mesh::Property_map<vertex_descriptor, Point_2> UV_map;
+using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace SMPI = CGAL::Surface_mesh_parameterization::internal;

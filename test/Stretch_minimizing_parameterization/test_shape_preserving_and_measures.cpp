@@ -5,7 +5,7 @@
 // of unity, linear precision), the shape-preserving and stretch-minimizing parameterizers on
 // planar meshes (reproduced exactly), and the stretch measures on analytic linear maps.
 
-#include "smp_test_util.h"
+#include "smp_test_mesh.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -19,19 +19,13 @@
 #include <random>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double>      Kernel;
-typedef Kernel::Point_2                     Point_2;
-typedef Kernel::Point_3                     Point_3;
-typedef CGAL::Surface_mesh<Point_3>         Mesh;
-typedef Mesh::Vertex_index                  vertex_descriptor;
-typedef Mesh::Halfedge_index                halfedge_descriptor;
+using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
 using SMP::internal::Vec3;
 
 const double pi = 3.14159265358979323846;
 
-typedef Mesh::Property_map<vertex_descriptor, Point_2> UV_map;
 
 // A border parameterizer that puts each border vertex at a given position (its in-plane
 // coordinates): with it, a method of linear precision must reproduce a planar mesh exactly.

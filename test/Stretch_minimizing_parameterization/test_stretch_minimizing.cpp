@@ -6,7 +6,7 @@
 // initializers and solvers, the default solver on a large system, the result on several threads,
 // and the quality bar of the paper's Mannequin head.
 
-#include "smp_test_util.h"
+#include "smp_test_mesh.h"
 #include "solver_configuration_eigen.h"
 
 #include <CGAL/Simple_cartesian.h>
@@ -29,50 +29,17 @@
 #include <atomic>
 #include <cmath>
 #include <functional>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <typeinfo>
 #include <vector>
 
-typedef CGAL::Simple_cartesian<double>      Kernel;
-typedef Kernel::Point_2                     Point_2;
-typedef Kernel::Point_3                     Point_3;
-typedef CGAL::Surface_mesh<Point_3>         Mesh;
-typedef Mesh::Vertex_index                  vertex_descriptor;
-typedef Mesh::Halfedge_index                halfedge_descriptor;
-typedef Mesh::Property_map<vertex_descriptor, Point_2> UV_map;
-
+using namespace smp_test;
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
 typedef SMP::Stretch_minimizing_parameterizer_3<Mesh> Default_smp;
-
-struct Loaded
-{
-  Mesh mesh;
-  halfedge_descriptor bhd;
-};
-
-Loaded load(const std::string& name)
-{
-  Loaded l;
-  const bool read = CGAL::IO::read_polygon_mesh(smp_test::data_file(name), l.mesh);
-  SMP_CHECK(read && !faces(l.mesh).empty(), "cannot read " << name);
-  l.bhd = CGAL::Polygon_mesh_processing::longest_border(l.mesh).first;
-  return l;
-}
-
-UV_map new_uv(Mesh& m, const std::string& name)
-{
-  return m.add_property_map<vertex_descriptor, Point_2>(name, Point_2(-7, -7)).first;
-}
-
-double max_distance(const Mesh& m, UV_map a, UV_map b)
-{
-  double d = 0.;
-  for(vertex_descriptor v : vertices(m))
-    d = (std::max)(d, std::hypot(a[v].x() - b[v].x(), a[v].y() - b[v].y()));
-  return d;
-}
 
 // The properties every run on a disk with a convex border must have.
 template <typename Parameterizer>
@@ -337,6 +304,35 @@ void check_solver_configurations()
             p.report().l2_stretch() << " here, " << other << " without SuiteSparse");
 }
 
+// Solver traits that only model CGAL's concept SparseLinearAlgebraWithFactorTraits_d (no
+// `solver()`): the same map as with the Eigen solver inside them.
+struct Concept_only_traits
+{
+  typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
+                                                    Eigen::COLAMDOrdering<int> > > Inside;
+  typedef Inside::Matrix Matrix;
+  typedef Inside::Vector Vector;
+  typedef Inside::NT NT;
+
+  bool factor(const Matrix& A, NT& D) { return inside.factor(A, D); }
+  bool linear_solver(const Vector& B, Vector& X) { return inside.linear_solver(B, X); }
+  bool linear_solver(const Matrix& A, const Vector& B, Vector& X, NT& D) { return inside.linear_solver(A, B, X, D); }
+
+  Inside inside;
+};
+
+void check_solver_concept()
+{
+  Loaded l = load("mannequin-devil.off");
+  UV_map a = new_uv(l.mesh, "v:uv_concept"), b = new_uv(l.mesh, "v:uv_eigen");
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Concept_only_traits> pc;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Concept_only_traits::Inside> pe;
+  check_run("concept-only solver traits", l.mesh, l.bhd, pc, a, SMP::parameterize(l.mesh, pc, l.bhd, a));
+  SMP_CHECK(SMP::parameterize(l.mesh, pe, l.bhd, b) == SMP::OK, "Eigen_solver_traits");
+  SMP_CHECK(pc.report().history.size() == pe.report().history.size() && max_distance(l.mesh, a, b) < 1e-9,
+            "concept-only traits and Eigen_solver_traits differ by " << max_distance(l.mesh, a, b));
+}
+
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 // The package's UMFPACK wrapper through CGAL's solver traits, as a user would call it: an
 // uncompressed matrix, a solve checked against Eigen's SparseLU, and a singular matrix refused.
@@ -555,6 +551,69 @@ void check_natural_border()
   SMP_CHECK(written == 0, "three_peaks: " << written << " interior vertices written after an error");
 }
 
+// The README's tables of the paper's method are what the parameterizer gives: every value as
+// printed there (to its last digit), for every row whose mesh is bundled and parameterized as
+// it is (the rows of cut meshes come from make_disk_seam(), checked in test_mesh_types).
+std::vector<std::vector<std::string> > readme_table(const std::string& header)
+{
+  std::ifstream in(std::string(SMP_TEST_DIR) + "/../../README.md");
+  SMP_CHECK(bool(in), "cannot read the README");
+  std::vector<std::vector<std::string> > rows;
+  std::string line;
+  bool inside = false;
+  while(std::getline(in, line)) {
+    if(line.rfind(header, 0) == 0) { inside = true; continue; }
+    if(!inside || line.rfind("|---", 0) == 0) continue;
+    if(line.empty() || line[0] != '|') break;
+    std::vector<std::string> cells;
+    std::stringstream cs(line.substr(1));
+    std::string cell;
+    while(std::getline(cs, cell, '|'))
+      cells.push_back(cell.substr(cell.find_first_not_of(' '), cell.find_last_not_of(' ') - cell.find_first_not_of(' ') + 1));
+    rows.push_back(cells);
+  }
+  SMP_CHECK(!rows.empty(), "no README table starts with " << header);
+  return rows;
+}
+
+// `printed` is `value` written with as many decimals as `printed` has.
+bool as_printed(double value, const std::string& printed)
+{
+  const std::size_t dot = printed.find('.');
+  const int decimals = dot == std::string::npos ? 0 : int(printed.size() - dot - 1);
+  return std::abs(value - std::stod(printed)) <= 0.5 * std::pow(10., -decimals) + 1e-12;
+}
+
+void check_readme_tables()
+{
+  // | mesh | V | U^0 (Floater) | U^1 | U^opt (eta = 1) | h |  and  | mesh | V | holes closed | U^0 | U^opt | h |
+  for(const bool holes : {false, true}) {
+    const auto rows = readme_table(holes ? "| mesh | V | holes closed |" : "| mesh | V | U^0 (Floater) |");
+    std::size_t checked = 0;
+    for(const auto& row : rows) {
+      if(row.size() != 6 || row[0].find("(cut)") != std::string::npos)
+        continue;
+      const std::string name = row[0].substr(0, row[0].find(' ')) + ".off";
+      Loaded l = load(name);
+      UV_map uv = new_uv(l.mesh, "v:uv_readme");
+      Default_smp p;
+      SMP_CHECK(SMP::parameterize(l.mesh, p, l.bhd, uv) == SMP::OK, name);
+      const SMP::Stretch_minimizing_report r = p.report();
+      const std::size_t vertices = l.mesh.number_of_vertices();
+      bool same = row[1] == std::to_string(vertices) && row[5] == std::to_string(r.kept_step) &&
+                  as_printed(r.history[0].l2_stretch, holes ? row[3] : row[2]) && as_printed(r.kept().l2_stretch, row[4]);
+      if(holes)
+        same = same && row[2] == std::to_string(r.holes_closed);
+      else
+        same = same && r.history.size() > 1 && as_printed(r.history[1].l2_stretch, row[3]);
+      SMP_CHECK(same, "README row '" << row[0] << "' differs: V " << vertices << ", U^0 " << r.history[0].l2_stretch
+                << ", U^opt " << r.kept().l2_stretch << ", h " << r.kept_step << ", holes closed " << r.holes_closed);
+      ++checked;
+    }
+    SMP_CHECK(checked >= 5, "only " << checked << " README rows checked");
+  }
+}
+
 int main()
 {
   for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
@@ -572,6 +631,8 @@ int main()
   check_threads();
   check_concurrent_copies();
   check_solver_configurations();
+  check_solver_concept();
+  check_readme_tables();
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
   check_umfpack_lu();
   check_large_system();

@@ -234,6 +234,44 @@ void check_errors()
   SMP_CHECK(nan.status != 0 && std::count(nan.err.begin(), nan.err.end(), '\n') == 1, "NaN coordinate: " << nan.status << " " << nan.err);
   check_error("atlas with a NaN coordinate", "nan.off --atlas -o out_nan_atlas", "nan.off");
   SMP_CHECK(!fs::exists("out_nan_atlas/nan.obj"), "no OBJ written for a NaN coordinate");
+  // headers that announce more elements than the file holds (CGAL's readers would reserve them)
+  std::ofstream("huge.off") << "OFF\n2000000000 2000000000 0\n0 0 0\n";
+  check_error("OFF header beyond the file", "huge.off", "announces");
+  std::ofstream("huge.ply") << "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
+                               "property float y\nproperty float z\nend_header\n0 0 0\n";
+  check_error("PLY header beyond the file", "huge.ply --atlas", "announces");
+  // found by the fuzz harness: CGAL 5.5.1's PLY reader adds a property to an element that is not there
+  std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
+                                         "property float y\nend_header\n0 0\n";
+  check_error("PLY property before any element", "property_first.ply --atlas", "property");
+  // found by the fuzz harness: CGAL 5.5.1 converts a face's numbers to unsigned integers unchecked
+  std::ofstream("negative_count.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-1.5 0 1 2\n";
+  check_error("OFF face of a negative vertex count", "negative_count.off --atlas", "face 0");
+  std::ofstream("bad_index.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2.5\n";
+  check_error("OFF face of a fractional index", "bad_index.off", "face 0");
+  // found by the fuzz harness: CGAL 5.5.1's read_polygon_mesh() reads past its points for such an index
+  std::ofstream("bad_index.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 9\n";
+  check_error("OBJ face index out of range", "bad_index.obj", "cannot read");
+}
+
+// A vertex of no face is left out (CGAL's parameterization wants a valid polygon mesh), and
+// said so; no temporary file is left in the output folder.
+void check_isolated_vertex()
+{
+  std::ofstream("isolated.off") << "OFF\n6 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0.2\n9 9 9\n"
+                                   "3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n";
+  const Result r = run("isolated.off --no-pictures -o out_isolated");
+  SMP_CHECK(r.status == 0 && r.out.find("removed 1 isolated") != std::string::npos, r.status << ": " << r.err);
+  boost::property_tree::ptree json;
+  try {
+    boost::property_tree::read_json("out_isolated/report.json", json);
+    SMP_CHECK(json.get<std::size_t>("mesh.isolated_vertices_removed") == 1 && json.get<std::size_t>("mesh.vertices") == 5,
+              "isolated vertex in the report");
+  } catch(const std::exception& e) {
+    SMP_CHECK(false, "report.json: " << e.what());
+  }
+  for(const auto& entry : fs::directory_iterator("out_isolated"))
+    SMP_CHECK(entry.path().extension() != ".part", entry.path() << " left behind");
 }
 
 // --atlas on what the disk path refuses (quads, a closed mesh, two parts): the OBJ keeps the
@@ -301,6 +339,7 @@ int main()
 {
   check_outputs();
   check_errors();
+  check_isolated_vertex();
   check_atlas();
   return smp_test::summary();
 }

@@ -20,7 +20,7 @@ namespace Surface_mesh_parameterization {
 /// What `make_atlas()` did.
 struct Atlas_report
 {
-  Error_code status = OK;            ///< `OK`, `ERROR_EMPTY_MESH` or `ERROR_WRONG_PARAMETER` (see `message`)
+  Error_code status = OK;            ///< `OK`, `ERROR_EMPTY_MESH`, `ERROR_WRONG_PARAMETER` or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` (out of memory; see `message`)
   std::string message;               ///< why, when `status` is not `OK`
   std::size_t charts = 0;            ///< charts in the atlas
   std::size_t triangles = 0;         ///< triangles the polygons were split into

@@ -42,6 +42,8 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <new>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -108,7 +110,9 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///   Shape_preserving_parameterizer_3<TriangleMesh_, Square_border_arc_length_parameterizer_3<TriangleMesh_> >
 /// \endcode
 /// \tparam SolverTraits_ `CGAL::Eigen_solver_traits<S>` for an Eigen sparse solver `S` (direct or
-///         iterative); its pattern is analysed once per call. <b>%Default:</b>
+///         iterative; its pattern is analysed once per call, its factorization serves both
+///         coordinates), or any model of CGAL's concept `SparseLinearAlgebraWithFactorTraits_d`
+///         (`factor()` at every step, then `linear_solver()` for each coordinate). <b>%Default:</b>
 /// \code
 ///   CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
 ///                                             Eigen::COLAMDOrdering<int> > >
@@ -312,7 +316,8 @@ public:
   ///   handles, a boundary that touches itself or another one at a vertex);
   /// - the error of the border parameterizer (e.g. `ERROR_BORDER_TOO_SHORT`);
   /// - `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`: initial weights not finite and positive (zero-length
-  ///   edges), or the solver failed;
+  ///   edges), the solver failed on \f$ U^0 \f$ (a later failure keeps the best map so far:
+  ///   `Stretch_minimizing_stop::SOLVER_FAILED`), or memory ran out (`std::bad_alloc`, caught);
   /// - `ERROR_NO_1_TO_1_MAPPING`: already \f$ U^0 \f$ has flipped faces (non-convex border).
   ///
   /// `report().message` says more. On an error, no interior vertex is written (the border
@@ -357,7 +362,13 @@ private:
     {
       // copies share the solver (CGAL's Eigen_solver_traits holds it by a shared pointer)
       std::lock_guard<std::mutex> lock(*m_solver_mutex);
-      status = run(mesh, bhd, uvmap, vimap, vpmap, settings, rep);
+      try {
+        status = run(mesh, bhd, uvmap, vimap, vpmap, settings, rep);
+      } catch(const std::bad_alloc&) {
+        internal::release_factors_of(m_solver_traits);
+        status = rep.status = ERROR_CANNOT_SOLVE_LINEAR_SYSTEM;
+        rep.message = "out of memory (std::bad_alloc): the mesh is too large for the memory available";
+      }
     }
     m_report->publish(std::move(rep));
     return status;
@@ -411,7 +422,7 @@ private:
 
     std::vector<internal::Vec2> best_uv;
     const bool solved = iterate(dc, settings, start, w, uv, best_uv, rep);
-    internal::release_factors(m_solver_traits.solver());
+    internal::release_factors_of(m_solver_traits);
     if(!solved)
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
     if(best_uv.empty())
@@ -450,8 +461,13 @@ private:
     const unsigned int threads = internal::thread_count(settings.threads);
     for(std::size_t h = 0;; ++h) {
       stretch.release();
-      if(!system.solve(w, uv, m_solver_traits, threads))
-        return false;
+      if(!system.solve(w, uv, m_solver_traits, threads)) {
+        if(best_uv.empty())
+          return false;
+        rep.stop = Stretch_minimizing_stop::SOLVER_FAILED;
+        rep.message = "the sparse solver failed at step " + std::to_string(h) + ": the best map so far is kept";
+        return true;
+      }
       internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv, threads);
 
       Stretch_minimizing_step step = internal::make_step(h, s, start);

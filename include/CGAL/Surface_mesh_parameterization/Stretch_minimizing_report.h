@@ -38,7 +38,8 @@ enum class Stretch_minimizing_stop
   STRETCH_INCREASED,  ///< the paper's rule: \f$ E(U^{h+1}) \ge E(U^h) \f$ (with `Step_rule::HALVE_ETA`: even with the smallest \f$ \eta \f$)
   ITERATION_CAP,      ///< `number_of_iterations` steps were taken
   VISITOR,            ///< the visitor asked to stop
-  FLIPPED_FACES       ///< a step produced flipped faces (possible with a non-convex border only)
+  FLIPPED_FACES,      ///< a step produced flipped faces (possible with a non-convex border only)
+  SOLVER_FAILED       ///< the sparse solver failed after \f$ U^0 \f$: the best map so far is kept (`message` says at which step)
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef

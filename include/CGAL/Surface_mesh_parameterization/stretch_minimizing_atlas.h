@@ -20,6 +20,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <new>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -87,7 +88,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \returns the atlas; its `report.status` is `OK`, `ERROR_EMPTY_MESH` (no polygon) or
+/// \returns the atlas; its `report.status` is `OK`, `ERROR_EMPTY_MESH` (no polygon),
+/// `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` (memory ran out: `std::bad_alloc`, caught) or
 /// `ERROR_WRONG_PARAMETER` (a coordinate that is not finite, an index out of range, a bad
 /// option: `report.message` says which); on an error `uv` and `chart` are empty.
 template <typename PointRange, typename PolygonRange, typename NamedParameters = parameters::Default_named_parameters
@@ -118,54 +120,60 @@ Atlas make_atlas(const PointRange& points, const PolygonRange& polygons,
   if(polygons.size() == 0)
     return fail(ERROR_EMPTY_MESH, "the soup has no polygon");
 
-  internal::Atlas_triangles m;
-  const std::string why = internal::make_atlas_triangles(points, polygons, m);
-  if(!why.empty())
-    return fail(ERROR_WRONG_PARAMETER, why);
-  r.triangles = m.vertex.size();
-  r.welded_vertices = m.welded_vertices;
-  r.flat_polygons = m.flat_polygons.size();
-  atlas.uv.resize(polygons.size());
-  std::size_t p = 0;
-  for(const auto& polygon : polygons)
-    atlas.uv[p++].assign(polygon.size(), std::array<double, 2>{0., 0.});
-  r.seconds_input = internal::seconds_since(start);
-  settings.tell(Atlas_stage::INPUT, 1, 1);
+  // memory running out anywhere below is reported, not thrown
+  try {
+    internal::Atlas_triangles m;
+    const std::string why = internal::make_atlas_triangles(points, polygons, m);
+    if(!why.empty())
+      return fail(ERROR_WRONG_PARAMETER, why);
+    r.triangles = m.vertex.size();
+    r.welded_vertices = m.welded_vertices;
+    r.flat_polygons = m.flat_polygons.size();
+    atlas.uv.resize(polygons.size());
+    std::size_t p = 0;
+    for(const auto& polygon : polygons)
+      atlas.uv[p++].assign(polygon.size(), std::array<double, 2>{0., 0.});
+    r.seconds_input = internal::seconds_since(start);
+    settings.tell(Atlas_stage::INPUT, 1, 1);
 
-  std::vector<std::vector<char> > written;
-  std::unordered_map<int, internal::Vec2> vertex_uv;
-  internal::build_atlas(m, polygons.size(), settings, atlas, written, vertex_uv);
-  // corners left out of the triangles (repeated, or of polygons without area): the uv of their
-  // position elsewhere in the polygon, else of that position in some chart, else the origin
-  p = 0;
-  for(const auto& polygon : polygons) {
-    std::size_t k = 0;
-    for(const auto corner : polygon) {
-      if(!written[p][k]) {
-        const int v = m.weld[std::size_t(corner)];
-        bool found = false;
-        std::size_t j = 0;
-        for(const auto other : polygon) {
-          if(written[p][j] && m.weld[std::size_t(other)] == v) {
-            atlas.uv[p][k] = atlas.uv[p][j];
-            found = true;
-            break;
+    std::vector<std::vector<char> > written;
+    std::unordered_map<int, internal::Vec2> vertex_uv;
+    internal::build_atlas(m, polygons.size(), settings, atlas, written, vertex_uv);
+    // corners left out of the triangles (repeated, or of polygons without area): the uv of their
+    // position elsewhere in the polygon, else of that position in some chart, else the origin
+    p = 0;
+    for(const auto& polygon : polygons) {
+      std::size_t k = 0;
+      for(const auto corner : polygon) {
+        if(!written[p][k]) {
+          const int v = m.weld[std::size_t(corner)];
+          bool found = false;
+          std::size_t j = 0;
+          for(const auto other : polygon) {
+            if(written[p][j] && m.weld[std::size_t(other)] == v) {
+              atlas.uv[p][k] = atlas.uv[p][j];
+              found = true;
+              break;
+            }
+            ++j;
           }
-          ++j;
+          if(!found) {
+            const auto it = vertex_uv.find(v);
+            if(it != vertex_uv.end())
+              atlas.uv[p][k] = it->second;
+          }
         }
-        if(!found) {
-          const auto it = vertex_uv.find(v);
-          if(it != vertex_uv.end())
-            atlas.uv[p][k] = it->second;
-        }
+        ++k;
       }
-      ++k;
+      ++p;
     }
-    ++p;
+    r.seconds = internal::seconds_since(start);
+    settings.tell(Atlas_stage::DONE, 1, 1);
+    return atlas;
+  } catch(const std::bad_alloc&) {
+    atlas = Atlas();
+    return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "out of memory (std::bad_alloc): the soup is too large for the memory available");
   }
-  r.seconds = internal::seconds_since(start);
-  settings.tell(Atlas_stage::DONE, 1, 1);
-  return atlas;
 }
 
 /// \ingroup PkgStretchMinimizingParameterizationRef

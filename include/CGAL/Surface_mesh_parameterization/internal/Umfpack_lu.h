@@ -159,7 +159,7 @@ public:
     X.resize(m_n, columns);
     if(m_numeric == nullptr || B.rows() != m_n)
       return false;
-    // workspaces allocated here: the threads must not throw
+    // one workspace per column: the columns are solved at the same time
     const std::size_t c = static_cast<std::size_t>(columns), n = static_cast<std::size_t>(m_n);
     std::vector<char> ok(c, 0);
     std::vector<std::vector<int> > wi(c, std::vector<int>(n));

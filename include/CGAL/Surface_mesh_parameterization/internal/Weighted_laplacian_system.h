@@ -29,7 +29,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 //
 // Only the weights change between steps, so the sparsity pattern is built once and analysed
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and
-// v columns together. Iterative solvers start from the previous solution.
+// v columns together. Iterative solvers start from the previous solution. Solver traits that
+// only model CGAL's concept (no Eigen solver inside) factor a copy of the matrix at every step.
 //
 // Memory: the factorization is the peak (the factors are the largest arrays of a call), so
 // what is not needed then is not held then. With a direct solver, the caller's weights are
@@ -39,10 +40,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 template <typename SolverTraits>
 class Weighted_laplacian_system
 {
-  typedef typename SolverTraits::Solver                      Eigen_solver;
-  typedef typename Eigen_solver::MatrixType                  Matrix;
-  static constexpr bool iterative =
-    std::is_base_of<Eigen::IterativeSolverBase<Eigen_solver>, Eigen_solver>::value;
+  typedef Solver_kind<SolverTraits>                          Kind;
+  typedef typename Kind::Matrix                              Matrix;
 
 public:
   explicit Weighted_laplacian_system(const Disk_component_base& dc) : m_dc(dc)
@@ -113,16 +112,20 @@ public:
     for(std::size_t k = 0; k < m_border_entries.size(); ++k)
       m_border_weight[k] = w[m_border_entries[k]];
 
-    Eigen_solver& solver = traits.solver();
     bool ok = true;
-    if constexpr(iterative) {
+    if constexpr(!Kind::eigen) {
+      ok = solve_by_concept(traits, right_hand_side(uv));
+    } else if constexpr(Kind::iterative) {
       // the preconditioner is rebuilt whole: Eigen 3.4's IncompleteLUT leaves its status
       // unset after analyzePattern() alone
+      auto& solver = traits.solver();
       solver.compute(m_A);
       ok = solver.info() == Eigen::Success;
       if(ok)
         m_X = solver.solveWithGuess(right_hand_side(uv), m_X);
+      ok = ok && solver.info() == Eigen::Success;
     } else {
+      auto& solver = traits.solver();
       if(!m_analysed) {
         analyze_pattern(solver, m_A);
         m_analysed = true;
@@ -137,7 +140,7 @@ public:
       if(hand_back)
         restore(w, threads);
     }
-    if(!ok || solver.info() != Eigen::Success || !m_X.allFinite())
+    if(!ok || !m_X.allFinite())
       return false;
     for(Eigen::Index i = 0; i < n; ++i)
       uv[m_dc.interior[i]] = {m_X(i, 0), m_X(i, 1)};
@@ -145,6 +148,33 @@ public:
   }
 
 private:
+  // With solver traits that model CGAL's `SparseLinearAlgebraWithFactorTraits_d`: one
+  // factorization, then the u and v columns (the solution of a column is X / D).
+  bool solve_by_concept(SolverTraits& traits, const Eigen::MatrixXd& B)
+  {
+    typedef typename SolverTraits::NT NT;
+    const Eigen::Index n = m_A.rows();
+    const std::size_t size = static_cast<std::size_t>(n); // the concept's constructors take a dimension
+    typename SolverTraits::Matrix A(size);
+    for(Eigen::Index k = 0; k < m_A.outerSize(); ++k)
+      for(typename Matrix::InnerIterator it(m_A, k); it; ++it)
+        A.set_coef(it.row(), it.col(), NT(it.value()), true);
+    NT D = NT(1);
+    if(!traits.factor(A, D))
+      return false;
+    m_X.resize(n, 2);
+    for(Eigen::Index c = 0; c < 2; ++c) {
+      typename SolverTraits::Vector b(size), x(size);
+      for(Eigen::Index i = 0; i < n; ++i)
+        b[i] = NT(B(i, c));
+      if(!traits.linear_solver(b, x))
+        return false;
+      for(Eigen::Index i = 0; i < n; ++i)
+        m_X(i, c) = CGAL::to_double(x[i] / D);
+    }
+    return true;
+  }
+
   // the border neighbours' share of every row
   Eigen::MatrixXd right_hand_side(const std::vector<Vec2>& uv) const
   {

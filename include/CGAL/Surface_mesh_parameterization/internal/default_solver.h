@@ -17,12 +17,15 @@
 #include <CGAL/Eigen_solver_traits.h>
 
 #include <Eigen/Dense>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseLU>
-#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
-#include <Eigen/UmfPackSupport>
-#endif
+
+#include <type_traits>
+#include <utility>
+
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 #include <CGAL/Surface_mesh_parameterization/internal/Umfpack_lu.h>
+#include <Eigen/UmfPackSupport>
 #endif
 
 namespace CGAL {
@@ -36,6 +39,27 @@ typedef CGAL::Eigen_solver_traits<Umfpack_lu<Eigen_sparse_matrix<double>::EigenT
 typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType,
                                                   Eigen::COLAMDOrdering<int> > >           Default_solver_traits;
 #endif
+
+// What the package knows of solver traits `Traits`: a `CGAL::Eigen_solver_traits` (a `Solver`
+// reached by `solver()`) has its pattern analysed once and its factorization reused, the
+// columns solved together; other traits are used through CGAL's concept
+// `SparseLinearAlgebraWithFactorTraits_d` (`factor()`, then `linear_solver()` per column).
+template <typename Traits, typename = void>
+struct Solver_kind
+{
+  static constexpr bool eigen = false;
+  static constexpr bool iterative = false;
+  typedef Eigen::SparseMatrix<double> Matrix; // the package's copy of the system
+};
+
+template <typename Traits>
+struct Solver_kind<Traits, std::void_t<typename Traits::Solver::MatrixType, decltype(std::declval<Traits&>().solver())> >
+{
+  typedef typename Traits::Solver Solver;
+  static constexpr bool eigen = true;
+  static constexpr bool iterative = std::is_base_of<Eigen::IterativeSolverBase<Solver>, Solver>::value;
+  typedef typename Solver::MatrixType Matrix;
+};
 
 // Analyses the pattern of `A`. A `UmfPackLU` given by the user is told to skip its iterative
 // refinement and ordered as `Umfpack_lu` orders (see there why).
@@ -65,6 +89,14 @@ void release_numeric(Solver&)
 template <typename Solver>
 void release_factors(Solver&)
 { }
+
+// `release_factors()` of the Eigen solver of `traits`, if it has one.
+template <typename Traits>
+void release_factors_of(Traits& traits)
+{
+  if constexpr(Solver_kind<Traits>::eigen)
+    release_factors(traits.solver());
+}
 
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 template <typename Matrix, typename Eigen_matrix>

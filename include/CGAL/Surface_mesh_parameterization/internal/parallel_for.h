@@ -14,7 +14,6 @@
 #include <cstddef>
 #include <exception>
 #include <mutex>
-#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -34,9 +33,41 @@ inline unsigned int thread_count(unsigned int requested)
   return cores > 0 ? cores : 1;
 }
 
+// The first exception thrown by the calls that `run()` makes, from any thread (an exception
+// left in a std::thread would terminate the program); `rethrow()` throws it on the calling thread.
+class First_exception
+{
+public:
+  // Calls `f()`; if it throws, keeps the exception (the first one) and returns false.
+  template <typename Function>
+  bool run(const Function& f)
+  {
+    try {
+      f();
+      return true;
+    } catch(...) {
+      std::lock_guard<std::mutex> lock(m_mutex);
+      if(!m_error)
+        m_error = std::current_exception();
+      return false;
+    }
+  }
+
+  void rethrow() const
+  {
+    if(m_error)
+      std::rethrow_exception(m_error);
+  }
+
+private:
+  std::exception_ptr m_error;
+  std::mutex m_mutex;
+};
+
 // Calls `f(begin, end)` on contiguous chunks covering [0, n), on at most `threads` threads,
 // with at least `min_chunk` items a chunk (starting a thread costs tens of microseconds).
-// `f` must not throw. If a thread cannot be started, its chunk runs on the calling thread.
+// If a thread cannot be started, its chunk runs on the calling thread. The first exception
+// thrown by `f` is rethrown here once every thread has stopped.
 template <typename Function>
 void parallel_for(std::size_t n, unsigned int threads, std::size_t min_chunk, const Function& f)
 {
@@ -45,20 +76,23 @@ void parallel_for(std::size_t n, unsigned int threads, std::size_t min_chunk, co
     f(std::size_t(0), n);
     return;
   }
+  First_exception error;
+  auto chunk = [&](std::size_t k) { error.run([&] { f(n * k / chunks, n * (k + 1) / chunks); }); };
   std::vector<std::thread> pool;
-  pool.reserve(chunks - 1);
+  pool.reserve(chunks - 1); // before any thread runs: a joinable thread must not be left behind
   std::size_t k = 1;
   try {
     for(; k < chunks; ++k)
-      pool.emplace_back(f, n * k / chunks, n * (k + 1) / chunks);
-  } catch(const std::system_error&) {
-    // no more threads: the remaining chunks run here
+      pool.emplace_back(chunk, k);
+  } catch(const std::exception&) {
+    // no more threads (or no memory for one): the remaining chunks run here
   }
-  f(std::size_t(0), n / chunks);
+  chunk(0);
   for(std::size_t j = k; j < chunks; ++j)
-    f(n * j / chunks, n * (j + 1) / chunks);
+    chunk(j);
   for(std::thread& t : pool)
     t.join();
+  error.rethrow();
 }
 
 // Calls `f(i)` for every i in [0, n) on at most `threads` threads, each taking the next item
@@ -68,18 +102,11 @@ template <typename Function>
 void parallel_for_each(std::size_t n, unsigned int threads, const Function& f)
 {
   std::atomic<std::size_t> next(0);
-  std::exception_ptr error;
-  std::mutex error_mutex;
+  First_exception error;
   auto work = [&]() {
-    for(std::size_t i = next++; i < n; i = next++) {
-      try {
-        f(i);
-      } catch(...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if(!error) error = std::current_exception();
+    for(std::size_t i = next++; i < n; i = next++)
+      if(!error.run([&] { f(i); }))
         next = n; // the others stop after their current item
-      }
-    }
   };
   std::vector<std::thread> pool;
   const std::size_t helpers = (std::min)(std::size_t(threads), n) - (n > 0 && threads > 0 ? 1 : 0);
@@ -87,14 +114,13 @@ void parallel_for_each(std::size_t n, unsigned int threads, const Function& f)
   try {
     for(std::size_t k = 0; k < helpers; ++k)
       pool.emplace_back(work);
-  } catch(const std::system_error&) {
-    // no more threads: the calling thread and the ones started take every item
+  } catch(const std::exception&) {
+    // no more threads (or no memory for one): the calling thread and the ones started take every item
   }
   work();
   for(std::thread& t : pool)
     t.join();
-  if(error)
-    std::rethrow_exception(error);
+  error.rethrow();
 }
 
 } // namespace internal

@@ -265,8 +265,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       });
       areas.resize(charts.size());
       parallel_for_each(order.size(), threads, [&](std::size_t i) {
-        flatten_chart(charts[order[i]], settings.chart);
-        areas[order[i]] = chart_areas(charts[order[i]]);
+        Chart_map& chart = charts[order[i]];
+        flatten_chart(chart, settings.chart);
+        areas[order[i]] = chart.ok ? chart_areas(chart) : Chart_areas(); // a failed chart has no uv
       });
       r.seconds_parameterization += seconds_since(t1);
       flattened += end - begin;
@@ -361,7 +362,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       all.tri.push_back({b - 3, b - 2, b - 1});
     }
   }
-  r.charts = kept.size();
+  // polygons without area are in chart 0: with no other polygon, chart 0 holds them alone
+  r.charts = (std::max)(kept.size(), std::size_t(number_of_polygons > 0 ? 1 : 0));
 
   Flat_stretch measure;
   const Flat_stretch_summary s = measure.evaluate(all, all_uv);

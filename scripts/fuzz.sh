@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harness (clang-14, ASan + UBSan) in build/fuzz and runs it for SECONDS
+# (default 120; CI runs it briefly, developers for hours: `bash scripts/fuzz.sh 3600`), on
+# JOBS processes (default 1). Seeds: the small bundled meshes and test/.../fuzz/seeds, made
+# into inputs of each target (fuzz_smp.cpp: the first byte chooses the target). The corpus
+# grows in build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and
+# fails the script: reproduce it with `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+seconds=${1:-120}
+jobs=${2:-1}
+
+bash scripts/install-deps.sh
+missing=()
+command -v clang++-14 > /dev/null || missing+=(clang-14)
+[ -e /usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a ] || \
+  ls /usr/lib/llvm-14/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a > /dev/null 2>&1 || missing+=(libclang-rt-14-dev)
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -ne 0 ] && sudo=sudo
+  $sudo apt-get install -y --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 \
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g" -DSMP_BUILD_FUZZERS=ON -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=OFF
+cmake --build build/fuzz -j2 --target fuzz_smp
+
+seeds=build/fuzz/seeds
+mkdir -p "$seeds" build/fuzz/corpus build/fuzz/findings
+prefix() { printf "\\x$(printf %02x "$1")\\x$(printf %02x "$2")"; }
+for f in test/Stretch_minimizing_parameterization/fuzz/seeds/* \
+         examples/Stretch_minimizing_parameterization/data/{nefertiti,pig}.off; do
+  case "${f##*.}" in off) e=0 ;; obj) e=1 ;; ply) e=2 ;; stl) e=3 ;; *) continue ;; esac
+  { prefix 0 $e; cat "$f"; } > "$seeds/reader-$(basename "$f")"
+done
+# soups: a few fixed byte strings for targets 1 (atlas) and 2 (parameterizer)
+for t in 1 2; do
+  for s in 1 2 3; do
+    { printf "\\x$(printf %02x $t)"; head -c 600 /dev/zero | tr '\0' "\\$(printf %03o $((s * 37)))"; } > "$seeds/soup-$t-$s"
+  done
+done
+
+parallel=()
+[ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
+# allocator_may_return_null: an allocation too large throws std::bad_alloc, as without ASan
+ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp build/fuzz/corpus "$seeds" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
+  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 "${parallel[@]}"

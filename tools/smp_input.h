@@ -1,0 +1,226 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// How the tools read a mesh file (OFF, OBJ, PLY, STL: CGAL's readers, by the file's extension),
+// shared with the fuzz harness so that it tests what users run. A file that cannot be read
+// gives a message, never an exception: an OFF or PLY header is checked first (CGAL's readers
+// reserve what it announces, and CGAL 5.5.1's PLY reader fails on a property before any
+// element), and an exception from a reader (out of memory included) becomes a message.
+
+#ifndef SMP_TOOLS_SMP_INPUT_H
+#define SMP_TOOLS_SMP_INPUT_H
+
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <new>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace smp_tools {
+
+namespace internal {
+
+inline std::string lower_extension(const std::string& file)
+{
+  std::string e = std::filesystem::path(file).extension().string();
+  for(char& c : e)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+// A token that is a whole number of at least 0 (as `value`).
+inline bool whole_number(const std::string& token, double& value)
+{
+  char* end = nullptr;
+  value = std::strtod(token.c_str(), &end);
+  return end != token.c_str() && *end == 0 && std::isfinite(value) && value >= 0. && value == std::floor(value);
+}
+
+// The tokens of the next line that holds any (comments removed); false at the end.
+inline bool next_tokens(std::istream& in, std::vector<std::string>& tokens)
+{
+  std::string line;
+  tokens.clear();
+  while(tokens.empty() && std::getline(in, line)) {
+    line.erase((std::min)(line.find('#'), line.size()));
+    std::istringstream fields(line);
+    for(std::string token; fields >> token;)
+      tokens.push_back(token);
+  }
+  return !tokens.empty();
+}
+
+// An ASCII OFF file: counts that the file can hold (CGAL reserves them), and face lines (CGAL
+// reads one face a line) of whole numbers: a vertex count, then as many vertex indices below
+// the number of vertices (CGAL 5.5.1 converts them from double to an unsigned integer without
+// a check). What this does not look at, the reader checks.
+inline bool check_off(std::istream& in, std::uintmax_t bytes, std::string& error)
+{
+  // [keyword [dimension, after nOFF]] vertices faces [edges], on whole lines
+  std::vector<std::string> header, tokens;
+  auto first_count = [&header]() -> std::size_t {
+    if(header.empty() || header[0].find("OFF") == std::string::npos)
+      return 0;
+    return header[0].find('n') != std::string::npos ? 2 : 1;
+  };
+  while((header.empty() || header.size() < first_count() + 2) && next_tokens(in, tokens))
+    header.insert(header.end(), tokens.begin(), tokens.end());
+  if(header.size() > 1 && header[1] == "BINARY")
+    return true;
+  const std::size_t first = first_count();
+  double vertices = 0., faces = 0.;
+  if(header.size() < first + 2 || !whole_number(header[first], vertices) || !whole_number(header[first + 1], faces)) {
+    error = "no OFF header of whole vertex and face counts";
+    return false;
+  }
+  if(vertices + faces > static_cast<double>(bytes)) {
+    std::ostringstream m;
+    m << "the header announces " << vertices + faces << " elements in " << bytes << " bytes";
+    error = m.str();
+    return false;
+  }
+  for(double v = 0.; v < vertices; ++v)
+    if(!next_tokens(in, tokens))
+      return true;
+  for(double f = 0.; f < faces && next_tokens(in, tokens); ++f) {
+    double corners = 0., index = 0.;
+    bool ok = whole_number(tokens[0], corners) && corners < double(tokens.size());
+    for(std::size_t k = 1; ok && k <= std::size_t(corners); ++k)
+      ok = whole_number(tokens[k], index) && index < vertices;
+    if(!ok) {
+      error = "face " + std::to_string(std::size_t(f)) + " is not a vertex count and as many vertex indices";
+      return false;
+    }
+  }
+  return true;
+}
+
+// A PLY header: counts that the file can hold (CGAL reserves them), and no property before the
+// first element (CGAL 5.5.1 adds it to the last element, of which there is none).
+inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error)
+{
+  std::string line;
+  double announced = 0.;
+  bool element = false;
+  while(std::getline(in, line) && line.rfind("end_header", 0) != 0) {
+    std::istringstream fields(line);
+    std::string word, name, count;
+    double n = 0.;
+    if(!(fields >> word))
+      continue;
+    if(word == "element") {
+      element = true;
+      if(fields >> name >> count && whole_number(count, n))
+        announced += n;
+    } else if(word == "property" && !element) {
+      error = "a PLY property comes before any element";
+      return false;
+    }
+  }
+  if(announced > static_cast<double>(bytes)) {
+    std::ostringstream m;
+    m << "the header announces " << announced << " elements in " << bytes << " bytes";
+    error = m.str();
+    return false;
+  }
+  return true;
+}
+
+// False, with a message, if an OFF or PLY file would make CGAL's reader misbehave (see
+// check_off() and check_ply()); other files pass.
+inline bool check_before_reading(const std::string& file, std::string& error)
+{
+  const std::string e = lower_extension(file);
+  if(e != ".off" && e != ".ply")
+    return true;
+  std::error_code ec;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
+  std::ifstream in(file, std::ios::binary);
+  if(ec || !in)
+    return true; // the reader says what is wrong
+  if(e == ".off" ? check_off(in, bytes, error) : check_ply(in, bytes, error))
+    return true;
+  error = "cannot read " + file + ": " + error;
+  return false;
+}
+
+// Runs a CGAL reader; an exception becomes false and a message.
+template <typename Read>
+bool guarded(const std::string& file, std::string& error, Read read)
+{
+  if(!check_before_reading(file, error))
+    return false;
+  try {
+    return read();
+  } catch(const std::bad_alloc&) {
+    error = "out of memory while reading " + file;
+  } catch(const std::exception& e) {
+    error = "cannot read " + file + ": " + e.what();
+  }
+  return false;
+}
+
+} // namespace internal
+
+// The polygons of `file`, as they are (no repair). False, with a message, if none can be read.
+template <typename Point>
+bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
+               std::string& error)
+{
+  const bool ok = internal::guarded(file, error, [&] {
+    return CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
+  });
+  if(ok && !polygons.empty())
+    return true;
+  if(error.empty())
+    error = "cannot read polygons from " + file;
+  return false;
+}
+
+// The polygon mesh of `file`, without its isolated vertices (CGAL's parameterization wants a
+// valid polygon mesh, and a vertex of no face has nothing to map); `isolated` receives how
+// many were removed. False, with a message, if it is not a polygon mesh (or has no face).
+// Read as a soup whose indices are checked, then made a mesh: CGAL 5.5.1's read_polygon_mesh()
+// reads past its array of points for an index out of range.
+template <typename Point>
+bool read_mesh(const std::string& file, CGAL::Surface_mesh<Point>& mesh, std::string& error, std::size_t& isolated)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  isolated = 0;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  if(!read_soup(file, points, polygons, error))
+    return false;
+  for(const auto& polygon : polygons)
+    for(std::size_t v : polygon)
+      if(v >= points.size()) {
+        error = "cannot read " + file + ": a face has a vertex index out of range";
+        return false;
+      }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    error = "cannot read a polygon mesh from " + file +
+            " (a soup with non-manifold edges, or an inconsistent orientation: add --atlas)";
+    return false;
+  }
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  isolated = PMP::remove_isolated_vertices(mesh);
+  if(isolated > 0)
+    mesh.collect_garbage();
+  return true;
+}
+
+} // namespace smp_tools
+
+#endif // SMP_TOOLS_SMP_INPUT_H
