@@ -177,6 +177,18 @@ Soup polygons()
   return s;
 }
 
+// Found by the fuzz harness: a polygon that visits its corners again (a, b, a, c, a, c) covers
+// the triangle (a, b, c) in both orientations; it must give one triangle, not two (one of them
+// flipped, on top of the other); beside it, a polygon that visits one corner twice.
+Soup folded()
+{
+  Soup s{"folded polygons", {}, {}};
+  s.points = {Point(-2, 1.5, -1), Point(-2, -2, 0.5), Point(-2, -2, -1.75), Point(3, 0, 0), Point(4, 0, 0),
+              Point(4, 1, 0), Point(3, 1, 0)};
+  s.polygons = {{0, 1, 0, 2, 0, 2}, {3, 4, 5, 3, 6}};
+  return s;
+}
+
 // A needle (a triangle 2000 times longer than high, one chart that cannot be cut) beside a
 // small square: the needle alone decides the scale of the packing.
 Soup needle()
@@ -427,6 +439,7 @@ int main(int argc, char** argv)
   run(polygons(), 1.05);
   run(needle(), 1.05);
   run(letters(), 1.05);
+  run(folded(), 1.05);
   for(const char* name : {"bear.off", "pig.off", "holes.off", "mannequin-devil.off", "three_peaks.off"})
     run(read(name), 1.05);
   return smp_test::summary();

@@ -119,7 +119,7 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
 
   std::vector<int> ring, ring_corner;
   std::vector<Vec3> ring_xyz;
-  std::vector<std::array<int, 3> > pieces;
+  std::vector<std::array<int, 3> > pieces, seen;
   std::size_t index = 0;
   for(const auto& polygon : polygons) {
     ring.clear();
@@ -149,10 +149,16 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
       ring_xyz.push_back(out.xyz[std::size_t(v)]);
     triangulate_polygon(ring_xyz, pieces);
     bool any = false;
+    seen.clear();
     for(const auto& t : pieces) {
       const std::array<int, 3> v = {ring[t[0]], ring[t[1]], ring[t[2]]};
       if(v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
         continue; // a polygon that visits a vertex twice: this piece spans nothing
+      std::array<int, 3> key = v;
+      std::sort(key.begin(), key.end());
+      if(std::find(seen.begin(), seen.end(), key) != seen.end())
+        continue; // or covers a triangle again (in any orientation): it would overlap it
+      seen.push_back(key);
       out.vertex.push_back(v);
       out.polygon.push_back(index);
       out.corner.push_back({ring_corner[t[0]], ring_corner[t[1]], ring_corner[t[2]]});
