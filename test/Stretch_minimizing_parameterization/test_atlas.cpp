@@ -177,9 +177,9 @@ Soup polygons()
   return s;
 }
 
-// Found by the fuzz harness: a polygon that visits its corners again (a, b, a, c, a, c) covers
-// the triangle (a, b, c) in both orientations; it must give one triangle, not two (one of them
-// flipped, on top of the other); beside it, a polygon that visits one corner twice.
+// Found by the fuzz harness: a polygon that goes back and forth (a, b, a, c, a, c) has no area
+// (its triangulation gave the triangle (a, b, c) twice, one flipped on top of the other); beside
+// it, a polygon that comes back to a corner: a triangle and an edge there and back.
 Soup folded()
 {
   Soup s{"folded polygons", {}, {}};
@@ -400,6 +400,37 @@ void progress()
             << flattened << " of " << known << " charts flattened before the packing");
 }
 
+// Found by the fuzz harness: coordinates near 1e300 made areas infinite (and a uv NaN, which
+// CGAL's convex hull asserts on). The atlas does not depend on the unit: scaled by a power of
+// two the soup gives the same atlas, bit for bit; scaled by 1e300 or 1e-300, a valid one.
+void scaled_soups()
+{
+  const Soup base = torus(24, 10, false);
+  const SMP::Atlas reference = SMP::make_atlas(base.points, base.polygons);
+  for(const double factor : {std::ldexp(1., 990), std::ldexp(1., -1000), 1e300, 1e-300}) {
+    Soup s = base;
+    s.name = "torus scaled by " + std::to_string(std::ilogb(factor)) + " powers of two";
+    for(Point& q : s.points)
+      q = Point(q.x() * factor, q.y() * factor, q.z() * factor);
+    run(s, 1.05);
+    if(factor == std::ldexp(1., 990) || factor == std::ldexp(1., -1000)) {
+      const SMP::Atlas a = SMP::make_atlas(s.points, s.polygons);
+      SMP_CHECK(a.uv == reference.uv && a.chart == reference.chart && a.report.l2_stretch == reference.report.l2_stretch,
+                s.name << ": not the atlas of the unscaled soup");
+    }
+  }
+  // a point far away that no polygon uses changes nothing; one that a polygon uses makes the
+  // torus too small to lay out at its scale: its triangles get no area, none is flipped
+  Soup far = base;
+  far.points.emplace_back(-0.5, 3.9e233, -0.75);
+  const SMP::Atlas a = SMP::make_atlas(far.points, far.polygons);
+  SMP_CHECK(a.uv == reference.uv && a.chart == reference.chart, "an unused far point changed the atlas");
+  far.polygons.push_back({0, 1, far.points.size() - 1});
+  const SMP::Atlas b = SMP::make_atlas(far.points, far.polygons);
+  SMP_CHECK(b.report.status == SMP::OK && b.report.flipped_faces == 0 && b.uv.size() == far.polygons.size(),
+            "a used far point: " << b.report.message << ", " << b.report.flipped_faces << " flipped");
+}
+
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
 // two corners) has no triangle to chart; its polygons are still in a chart that exists.
 void only_flat_polygons()
@@ -427,6 +458,7 @@ int main(int argc, char** argv)
   }
   bad_input();
   only_flat_polygons();
+  scaled_soups();
   progress();
   mesh_atlas<CGAL::Surface_mesh<Point> >(torus(40, 16, true), "Surface_mesh");
   mesh_atlas<CGAL::Polyhedron_3<CGAL::Simple_cartesian<double> > >(torus(40, 16, false), "Polyhedron_3");
@@ -440,6 +472,17 @@ int main(int argc, char** argv)
   run(needle(), 1.05);
   run(letters(), 1.05);
   run(folded(), 1.05);
+  {
+    const Soup f = folded();
+    const SMP::Atlas a = SMP::make_atlas(f.points, f.polygons);
+    SMP_CHECK(a.report.triangles == 1 && a.report.flat_polygons == 1 && a.report.flipped_faces == 0,
+              "folded polygons: " << a.report.triangles << " triangles, " << a.report.flat_polygons << " flat");
+    // a bow-tie (a polygon that touches itself at a vertex): its two triangles
+    const std::vector<Point> bow = {Point(0, 0, 0), Point(1, -1, 0), Point(1, 1, 0), Point(-1, 1, 0), Point(-1, -1, 0)};
+    const SMP::Atlas b = SMP::make_atlas(bow, std::vector<Polygon>{{0, 1, 2, 0, 3, 4}});
+    SMP_CHECK(b.report.status == SMP::OK && b.report.triangles == 2 && b.report.flipped_faces == 0,
+              "bow-tie: " << b.report.triangles << " triangles, " << b.report.flipped_faces << " flipped");
+  }
   for(const char* name : {"bear.off", "pig.off", "holes.off", "mannequin-devil.off", "three_peaks.off"})
     run(read(name), 1.05);
   return smp_test::summary();

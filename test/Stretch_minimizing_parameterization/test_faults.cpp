@@ -50,8 +50,29 @@ void* operator new(std::size_t size)
     return p;
   throw std::bad_alloc();
 }
+// every other form goes through the two above (with a sanitizer, a block must be freed by the
+// allocator that made it)
+void* operator new[](std::size_t size) { return ::operator new(size); }
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept
+{
+  try {
+    return ::operator new(size);
+  } catch(const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return ::operator new(size, tag); }
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
+
+// LeakSanitizer: CGAL's Surface_mesh property container leaks the array it is adding when the
+// allocation that follows fails (CGAL 6.1.1, Property_container::add); only this test makes
+// allocations fail.
+extern "C" const char* __lsan_default_suppressions() { return "leak:Property_container"; }
 
 namespace {
 
@@ -196,6 +217,6 @@ int main()
                       SMP::Stretch_minimizing_parameterizer_3<Mesh>(
                         P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH).free_border(true)),
                       "nefertiti.off", 400);
-  check_atlas_out_of_memory("pig.off", 300);
+  check_atlas_out_of_memory("pig.off", 120);
   return smp_test::summary();
 }

@@ -27,6 +27,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <functional>
 #include <fstream>
@@ -551,9 +552,10 @@ void check_natural_border()
   SMP_CHECK(written == 0, "three_peaks: " << written << " interior vertices written after an error");
 }
 
-// The README's tables of the paper's method are what the parameterizer gives: every value as
-// printed there (to its last digit), for every row whose mesh is bundled and parameterized as
-// it is (the rows of cut meshes come from make_disk_seam(), checked in test_mesh_types).
+// The README's tables of the paper's method and of its borders are what the parameterizer
+// gives: every value as printed there (to its last digit), for every row whose mesh is bundled
+// and parameterized as it is (the rows of cut meshes come from make_disk_seam(), checked in
+// test_mesh_types).
 std::vector<std::vector<std::string> > readme_table(const std::string& header)
 {
   std::ifstream in(std::string(SMP_TEST_DIR) + "/../../README.md");
@@ -612,6 +614,44 @@ void check_readme_tables()
     }
     SMP_CHECK(checked >= 5, "only " << checked << " README rows checked");
   }
+
+  // | mesh | CGAL square | ear-aware square | natural (LSCM) border |: U^opt, and in parentheses
+  // the faces flattened on the border where the cell gives their number; a natural border
+  // that LSCM folds is refused
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, SMP::Square_border_ear_aware_parameterizer_3<Mesh> > Ear_aware;
+  typedef SMP::Shape_preserving_parameterizer_3<Mesh, SMP::Natural_border_parameterizer_3<Mesh> > Natural;
+  auto cell_agrees = [](const SMP::Stretch_minimizing_report& r, SMP::Error_code status, const std::string& cell) {
+    if(cell.find("refused") != std::string::npos)
+      return status == SMP::ERROR_NO_1_TO_1_MAPPING;
+    const std::size_t space = cell.find(' ');
+    bool ok = status == SMP::OK && as_printed(r.kept().l2_stretch, cell.substr(0, space));
+    const std::size_t open = cell.find('(');
+    if(ok && open != std::string::npos && std::isdigit(static_cast<unsigned char>(cell[open + 1])) &&
+       cell.find("flips") == std::string::npos)
+      ok = std::stoul(cell.substr(open + 1)) == r.kept().degenerate_uv_faces;
+    return ok;
+  };
+  const auto rows = readme_table("| mesh | CGAL square | ear-aware square | natural (LSCM) border |");
+  for(const auto& row : rows) {
+    if(row.size() != 4)
+      continue;
+    Loaded l = load(row[0] + ".off");
+    UV_map uv = new_uv(l.mesh, "v:uv_readme_borders");
+    Default_smp square;
+    SMP::Stretch_minimizing_parameterizer_3<Mesh, Ear_aware> ear_aware;
+    SMP::Stretch_minimizing_parameterizer_3<Mesh, Natural> natural;
+    const SMP::Error_code es = SMP::parameterize(l.mesh, square, l.bhd, uv);
+    const SMP::Error_code ee = SMP::parameterize(l.mesh, ear_aware, l.bhd, uv);
+    const SMP::Error_code en = SMP::parameterize(l.mesh, natural, l.bhd, uv);
+    SMP_CHECK(cell_agrees(square.report(), es, row[1]) && cell_agrees(ear_aware.report(), ee, row[2]) &&
+              cell_agrees(natural.report(), en, row[3]),
+              "README borders row '" << row[0] << "' differs: square " << SMP::error_message(es) << " "
+              << (es == SMP::OK ? square.report().l2_stretch() : 0.) << " ("
+              << (es == SMP::OK ? square.report().kept().degenerate_uv_faces : 0) << "), ear-aware "
+              << SMP::error_message(ee) << " " << (ee == SMP::OK ? ear_aware.report().l2_stretch() : 0.)
+              << ", natural " << SMP::error_message(en) << " " << (en == SMP::OK ? natural.report().l2_stretch() : 0.));
+  }
+  SMP_CHECK(rows.size() >= 4, "README borders table: " << rows.size() << " rows");
 }
 
 int main()

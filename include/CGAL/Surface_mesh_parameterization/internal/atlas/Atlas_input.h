@@ -17,11 +17,12 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <string>
 #include <tuple>
+#include <unordered_map>
 #include <utility>
-#include <functional>
 #include <vector>
 
 namespace CGAL {
@@ -41,6 +42,7 @@ struct Atlas_triangles
   std::vector<std::size_t> flat_polygons;
   std::vector<int> weld;                         // per input vertex: the first input vertex at its position
   std::size_t welded_vertices = 0;               // input vertices merged into an earlier one
+  double length_unit = 1.;                       // the input's length of a unit of `xyz`
 };
 
 // Hash of an edge given as its two vertex indices, smaller first.
@@ -89,8 +91,50 @@ inline void triangulate_polygon(const std::vector<Vec3>& p, std::vector<std::arr
   }
 }
 
-// Reads the soup into `out`. Returns an empty string, or why the soup cannot be used: a
-// coordinate that is not finite, a corner index out of range.
+// Whether a triangle (in the scaled coordinates, the largest in [1/2, 1)) is too small for its
+// lengths and area to be computed (their squares would underflow): a soup whose coordinates
+// span more than double precision at one scale (e.g. 1e233 beside 1) has it laid out without
+// area, rather than as a triangle of arbitrary shape and orientation.
+inline bool too_small(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  const double limit = std::ldexp(1., -480);
+  for(int i = 0; i < 3; ++i)
+    if(std::abs(a[i] - b[i]) >= limit || std::abs(b[i] - c[i]) >= limit || std::abs(c[i] - a[i]) >= limit)
+      return false;
+  return true;
+}
+
+// Splits a closed walk over vertices (none twice in a row), with the polygon corner of each
+// step, into simple loops: where the walk comes back to a vertex, the part since its last visit
+// is a loop of its own. A polygon that touches itself at a vertex (a bow-tie) gives its two
+// halves; one that goes back and forth (a, b, a, c) gives loops without area.
+inline void split_into_simple_loops(const std::vector<int>& ring, const std::vector<int>& corner,
+                                    std::vector<std::pair<std::vector<int>, std::vector<int> > >& loops)
+{
+  loops.clear();
+  std::vector<int> walk, walk_corner;
+  std::unordered_map<int, std::size_t> position; // of the vertices on `walk`
+  for(std::size_t i = 0; i < ring.size(); ++i) {
+    const auto it = position.find(ring[i]);
+    if(it != position.end()) {
+      const std::size_t j = it->second;
+      loops.emplace_back(std::vector<int>(walk.begin() + std::ptrdiff_t(j), walk.end()),
+                         std::vector<int>(walk_corner.begin() + std::ptrdiff_t(j), walk_corner.end()));
+      for(std::size_t k = j; k < walk.size(); ++k)
+        position.erase(walk[k]);
+      walk.resize(j);
+      walk_corner.resize(j);
+    }
+    position[ring[i]] = walk.size();
+    walk.push_back(ring[i]);
+    walk_corner.push_back(corner[i]);
+  }
+  loops.emplace_back(walk, walk_corner);
+}
+
+// Reads the soup into `out`, its coordinates scaled by a power of two (`length_unit`). Returns
+// an empty string, or why the soup cannot be used: a coordinate that is not finite, a corner
+// index out of range.
 template <typename PointRange, typename PolygonRange>
 std::string make_atlas_triangles(const PointRange& points, const PolygonRange& polygons, Atlas_triangles& out)
 {
@@ -104,7 +148,8 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
   }
   const std::size_t nv = out.xyz.size();
 
-  // weld: every vertex to the first one at its position
+  // weld: every vertex to the first one at its position (before the scaling below, which may
+  // take tiny differences to zero)
   std::vector<int>& weld = out.weld;
   weld.resize(nv);
   {
@@ -117,19 +162,46 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
     }
   }
 
+  // the indices checked, and the vertices that polygons use
+  std::vector<char> used(nv, 0);
+  std::size_t index = 0;
+  for(const auto& polygon : polygons) {
+    for(const auto corner : polygon) {
+      const long long c = static_cast<long long>(corner);
+      if(c < 0 || std::size_t(c) >= nv)
+        return "polygon " + std::to_string(index) + " has a vertex index out of range";
+      used[std::size_t(weld[std::size_t(c)])] = 1;
+    }
+    ++index;
+  }
+
+  // the largest coordinate of a vertex in use scaled into [1/2, 1) by a power of two: lengths,
+  // areas and their products stay finite whatever the input's unit (exact, but for tiny
+  // coordinates)
+  double largest = 0.;
+  for(std::size_t v = 0; v < nv; ++v)
+    if(used[v])
+      largest = (std::max)({largest, std::abs(out.xyz[v][0]), std::abs(out.xyz[v][1]), std::abs(out.xyz[v][2])});
+  if(largest > 0.) {
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    out.length_unit = std::ldexp(1., exponent);
+    for(Vec3& q : out.xyz)
+      for(double& c : q)
+        c = std::ldexp(c, -exponent);
+  }
+
   std::vector<int> ring, ring_corner;
   std::vector<Vec3> ring_xyz;
   std::vector<std::array<int, 3> > pieces, seen;
-  std::size_t index = 0;
+  std::vector<std::pair<std::vector<int>, std::vector<int> > > loops;
+  index = 0;
   for(const auto& polygon : polygons) {
     ring.clear();
     ring_corner.clear();
     int k = 0;
     for(const auto corner : polygon) {
-      const long long c = static_cast<long long>(corner);
-      if(c < 0 || std::size_t(c) >= nv)
-        return "polygon " + std::to_string(index) + " has a vertex index out of range";
-      const int v = weld[std::size_t(c)];
+      const int v = weld[std::size_t(static_cast<long long>(corner))];
       if(ring.empty() || ring.back() != v) {
         ring.push_back(v);
         ring_corner.push_back(k);
@@ -144,25 +216,31 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
       out.flat_polygons.push_back(index++);
       continue;
     }
-    ring_xyz.clear();
-    for(int v : ring)
-      ring_xyz.push_back(out.xyz[std::size_t(v)]);
-    triangulate_polygon(ring_xyz, pieces);
+    // each simple loop triangulated; a triangle covered twice (in any orientation) kept once
+    split_into_simple_loops(ring, ring_corner, loops);
     bool any = false;
     seen.clear();
-    for(const auto& t : pieces) {
-      const std::array<int, 3> v = {ring[t[0]], ring[t[1]], ring[t[2]]};
-      if(v[0] == v[1] || v[1] == v[2] || v[2] == v[0])
-        continue; // a polygon that visits a vertex twice: this piece spans nothing
-      std::array<int, 3> key = v;
-      std::sort(key.begin(), key.end());
-      if(std::find(seen.begin(), seen.end(), key) != seen.end())
-        continue; // or covers a triangle again (in any orientation): it would overlap it
-      seen.push_back(key);
-      out.vertex.push_back(v);
-      out.polygon.push_back(index);
-      out.corner.push_back({ring_corner[t[0]], ring_corner[t[1]], ring_corner[t[2]]});
-      any = true;
+    for(const auto& loop : loops) {
+      if(loop.first.size() < 3)
+        continue; // a walk there and back: no area
+      ring_xyz.clear();
+      for(int v : loop.first)
+        ring_xyz.push_back(out.xyz[std::size_t(v)]);
+      triangulate_polygon(ring_xyz, pieces);
+      for(const auto& t : pieces) {
+        const std::array<int, 3> v = {loop.first[t[0]], loop.first[t[1]], loop.first[t[2]]};
+        if(too_small(out.xyz[std::size_t(v[0])], out.xyz[std::size_t(v[1])], out.xyz[std::size_t(v[2])]))
+          continue;
+        std::array<int, 3> key = v;
+        std::sort(key.begin(), key.end());
+        if(std::find(seen.begin(), seen.end(), key) != seen.end())
+          continue;
+        seen.push_back(key);
+        out.vertex.push_back(v);
+        out.polygon.push_back(index);
+        out.corner.push_back({loop.second[t[0]], loop.second[t[1]], loop.second[t[2]]});
+        any = true;
+      }
     }
     if(!any)
       out.flat_polygons.push_back(index);

@@ -391,7 +391,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       e.second += g.glued(int(3 * t) + k);
     }
   for(const auto& e : edges) {
-    const double l = norm3(sub3(m.xyz[std::size_t(e.first.first)], m.xyz[std::size_t(e.first.second)]));
+    const double l = m.length_unit * norm3(sub3(m.xyz[std::size_t(e.first.first)], m.xyz[std::size_t(e.first.second)]));
     r.edge_length += l;
     if(e.second.first >= 2 && !(e.second.first == 2 && e.second.second == 2))
       r.seam_length += l;
