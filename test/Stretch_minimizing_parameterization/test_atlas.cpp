@@ -429,6 +429,11 @@ void scaled_soups()
   const SMP::Atlas b = SMP::make_atlas(far.points, far.polygons);
   SMP_CHECK(b.report.status == SMP::OK && b.report.flipped_faces == 0 && b.uv.size() == far.polygons.size(),
             "a used far point: " << b.report.message << ", " << b.report.flipped_faces << " flipped");
+  // a quad with a far corner: a needle that cannot be flattened with the other triangle, so
+  // each is laid out alone, in its corners' order (it was laid out in its vertices' order, flipped)
+  const std::vector<Point> quad = {Point(1, 1, 1), Point(-2, -6.8e124, 1), Point(-1.75, -2, 1.5), Point(1.75, 1.5, 1.75)};
+  const SMP::Atlas c = SMP::make_atlas(quad, std::vector<Polygon>{{0, 1, 2, 3}});
+  SMP_CHECK(c.report.status == SMP::OK && c.report.flipped_faces == 0, "needle: " << c.report.flipped_faces << " flipped");
 }
 
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of

@@ -28,7 +28,7 @@ struct Atlas_report
   std::size_t flat_polygons = 0;     ///< polygons with fewer than three distinct positions (zero uv area)
   double l2_stretch = 0.;            ///< normalized L2 stretch of the whole atlas (Sander et al. 2001)
   double linf_stretch = 0.;          ///< normalized Linf stretch of the whole atlas
-  std::size_t flipped_faces = 0;     ///< triangles whose uv orientation is not the input's (0 unless a chart failed)
+  std::size_t flipped_faces = 0;     ///< triangles whose uv orientation is not the input's, among those with an area in 3D and in uv (above \f$ 10^{-12} \f$ of the mean, as in `compute_stretch_statistics()`); 0 unless a chart failed
   double seam_length = 0.;           ///< surface length of the cut edges (edges of two or more faces whose sides are not glued)
   double edge_length = 0.;           ///< surface length of all edges
   double utilization = 0.;           ///< area of the charts / area of the unit square

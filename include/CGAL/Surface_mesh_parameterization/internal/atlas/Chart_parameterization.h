@@ -25,6 +25,7 @@
 
 #include <Eigen/SparseLU>
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <vector>
@@ -79,15 +80,22 @@ inline void make_chart_vertices(const Atlas_triangles& m, Chart_growing& g, Char
 // instead (it has no 3D area, so it carries no stretch).
 inline void layout_single_triangle(Chart_map& chart)
 {
-  const Vec3 &p = chart.flat.xyz[0], &q = chart.flat.xyz[1], &r = chart.flat.xyz[2];
+  // in the order of the triangle's corners (the input's orientation), whatever the order of
+  // the chart's vertices
+  const Triangle& t = chart.flat.tri[0];
+  const Vec3 &p = chart.flat.xyz[std::size_t(t[0])], &q = chart.flat.xyz[std::size_t(t[1])],
+             &r = chart.flat.xyz[std::size_t(t[2])];
   const double a = norm3(sub3(q, p));
   const Vec3 e = sub3(r, p);
   double x = a > 0. ? dot3(e, sub3(q, p)) / a : 0.;
   double y = a > 0. ? norm3(cross3(sub3(q, p), e)) / a : 0.;
   const double size = (std::max)({a, norm3(e), norm3(sub3(r, q)), 1e-300});
-  chart.uv = {Vec2{0., 0.}, Vec2{a > 0. ? a : size, 0.}, Vec2{x, y}};
+  std::array<Vec2, 3> corner = {Vec2{0., 0.}, Vec2{a > 0. ? a : size, 0.}, Vec2{x, y}};
   if(!(y > 1e-6 * size)) // no 3D area: any thin positive triangle
-    chart.uv = {Vec2{0., 0.}, Vec2{size, 0.}, Vec2{0.5 * size, 1e-3 * size}};
+    corner = {Vec2{0., 0.}, Vec2{size, 0.}, Vec2{0.5 * size, 1e-3 * size}};
+  chart.uv.assign(3, Vec2{0., 0.});
+  for(int k = 0; k < 3; ++k)
+    chart.uv[std::size_t(t[k])] = corner[std::size_t(k)];
 }
 
 // Flattens the chart, whose vertices are made (`make_chart_vertices()`). On failure `chart.ok`

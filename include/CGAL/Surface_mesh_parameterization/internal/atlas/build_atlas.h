@@ -369,12 +369,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   const Flat_stretch_summary s = measure.evaluate(all, all_uv);
   r.l2_stretch = s.l2;
   r.linf_stretch = s.linf;
+  // every chart is laid out counterclockwise: a face of negative uv area is flipped, unless it
+  // has no area to speak of, in 3D or in uv (the package's measure leaves those out, as here)
   r.flipped_faces = 0;
-  for(const Triangle& t : all.tri) {
-    const Vec2 &a = all_uv[std::size_t(t[0])], &b = all_uv[std::size_t(t[1])], &c = all_uv[std::size_t(t[2])];
-    if(internal::twice_signed_area(a, b, c) < 0.)
+  for(std::size_t t = 0; t < all.tri.size(); ++t)
+    if(measure.used(t) && measure.faces()[t].area_uv < 0.)
       ++r.flipped_faces;
-  }
 
   // seams: edges of two or more sides that are not one glued pair, among the sides of the
   // input's polygons (the diagonals that split them are no edges of the input)
