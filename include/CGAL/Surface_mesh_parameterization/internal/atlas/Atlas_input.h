@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 #include <tuple>
 #include <unordered_map>
@@ -193,7 +194,8 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
 
   std::vector<int> ring, ring_corner;
   std::vector<Vec3> ring_xyz;
-  std::vector<std::array<int, 3> > pieces, seen;
+  std::vector<std::array<int, 3> > pieces;
+  std::set<std::array<int, 3> > seen; // the triangles of the polygon, as sorted vertices
   std::vector<std::pair<std::vector<int>, std::vector<int> > > loops;
   index = 0;
   for(const auto& polygon : polygons) {
@@ -233,9 +235,8 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
           continue;
         std::array<int, 3> key = v;
         std::sort(key.begin(), key.end());
-        if(std::find(seen.begin(), seen.end(), key) != seen.end())
+        if(!seen.insert(key).second)
           continue;
-        seen.push_back(key);
         out.vertex.push_back(v);
         out.polygon.push_back(index);
         out.corner.push_back({loop.second[t[0]], loop.second[t[1]], loop.second[t[2]]});
