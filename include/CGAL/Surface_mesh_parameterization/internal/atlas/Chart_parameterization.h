@@ -91,8 +91,10 @@ inline void layout_single_triangle(Chart_map& chart)
   double y = a > 0. ? norm3(cross3(sub3(q, p), e)) / a : 0.;
   const double size = (std::max)({a, norm3(e), norm3(sub3(r, q)), 1e-300});
   std::array<Vec2, 3> corner = {Vec2{0., 0.}, Vec2{a > 0. ? a : size, 0.}, Vec2{x, y}};
-  if(!(y > 1e-6 * size)) // no 3D area: any thin positive triangle
-    corner = {Vec2{0., 0.}, Vec2{size, 0.}, Vec2{0.5 * size, 1e-3 * size}};
+  if(!(y > 1e-6 * size) || !std::isfinite(x) || !std::isfinite(size)) { // no 3D area: any thin positive triangle
+    const double side = std::isfinite(size) ? size : 1.;
+    corner = {Vec2{0., 0.}, Vec2{side, 0.}, Vec2{0.5 * side, 1e-3 * side}};
+  }
   chart.uv.assign(3, Vec2{0., 0.});
   for(int k = 0; k < 3; ++k)
     chart.uv[std::size_t(t[k])] = corner[std::size_t(k)];
@@ -158,6 +160,8 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     return;
   chart.l2 = s.degenerate_3d == chart.flat.tri.size() ? 1. : s.l2;
   chart.ok = std::isfinite(chart.l2);
+  for(const Vec2& q : chart.uv) // a chart is packed only with finite uv
+    chart.ok = chart.ok && std::isfinite(q[0]) && std::isfinite(q[1]);
 }
 
 CGAL_SMP_END_SOLVER_NAMESPACE
