@@ -3,9 +3,9 @@
 //
 // How the tools read a mesh file (OFF, OBJ, PLY, STL: CGAL's readers, by the file's extension),
 // shared with the fuzz harness so that it tests what users run. A file that cannot be read
-// gives a message, never an exception: an OFF or PLY header is checked first (CGAL's readers
-// reserve what it announces, and CGAL 5.5.1's PLY reader fails on a property before any
-// element), and an exception from a reader (out of memory included) becomes a message.
+// gives a message, never an exception: an OFF or PLY file is checked first where CGAL 5.5.1's
+// readers would misbehave (see check_off() and check_ply()), and an exception from a reader
+// (out of memory included) becomes a message.
 
 #ifndef SMP_TOOLS_SMP_INPUT_H
 #define SMP_TOOLS_SMP_INPUT_H
@@ -40,12 +40,15 @@ inline std::string lower_extension(const std::string& file)
   return e;
 }
 
+// A whole number of at least 0.
+inline bool whole(double x) { return std::isfinite(x) && x >= 0. && x == std::floor(x); }
+
 // A token that is a whole number of at least 0 (as `value`).
 inline bool whole_number(const std::string& token, double& value)
 {
   char* end = nullptr;
   value = std::strtod(token.c_str(), &end);
-  return end != token.c_str() && *end == 0 && std::isfinite(value) && value >= 0. && value == std::floor(value);
+  return end != token.c_str() && *end == 0 && whole(value);
 }
 
 // The tokens of the next line that holds any (comments removed); false at the end.
@@ -91,14 +94,33 @@ inline bool check_off(std::istream& in, std::uintmax_t bytes, std::string& error
     error = m.str();
     return false;
   }
+  // the body, in one pass without tokens (it is as long as the file): the vertex lines are
+  // only counted, the face lines read as numbers, as CGAL reads them
+  std::string line;
+  std::vector<double> numbers;
+  auto next_line = [&]() {
+    while(std::getline(in, line)) {
+      line.erase((std::min)(line.find('#'), line.size()));
+      if(line.find_first_not_of(" \t\r") != std::string::npos)
+        return true;
+    }
+    return false;
+  };
   for(double v = 0.; v < vertices; ++v)
-    if(!next_tokens(in, tokens))
+    if(!next_line())
       return true;
-  for(double f = 0.; f < faces && next_tokens(in, tokens); ++f) {
-    double corners = 0., index = 0.;
-    bool ok = whole_number(tokens[0], corners) && corners < double(tokens.size());
-    for(std::size_t k = 1; ok && k <= std::size_t(corners); ++k)
-      ok = whole_number(tokens[k], index) && index < vertices;
+  for(double f = 0.; f < faces && next_line(); ++f) {
+    numbers.clear();
+    const char* at = line.c_str();
+    for(char* end = nullptr;; at = end) {
+      const double x = std::strtod(at, &end);
+      if(end == at)
+        break;
+      numbers.push_back(x);
+    }
+    bool ok = !numbers.empty() && whole(numbers[0]) && numbers[0] < double(numbers.size());
+    for(std::size_t k = 1; ok && k <= std::size_t(numbers[0]); ++k)
+      ok = whole(numbers[k]) && numbers[k] < vertices;
     if(!ok) {
       error = "face " + std::to_string(std::size_t(f)) + " is not a vertex count and as many vertex indices";
       return false;
