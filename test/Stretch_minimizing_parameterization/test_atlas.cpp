@@ -436,6 +436,39 @@ void scaled_soups()
   SMP_CHECK(c.report.status == SMP::OK && c.report.flipped_faces == 0, "needle: " << c.report.flipped_faces << " flipped");
 }
 
+// Found by the fuzz harness: a chart of two triangles that touch only at a repeated position
+// (two chart vertices at one point). The parameterizer flattens the piece of the longest
+// border only; the other piece's uv were never written (they reached the packing as NaN). Such
+// a chart must be refused, so that it is split into its pieces.
+void chart_of_two_pieces()
+{
+  SMP::internal::Chart_map chart;
+  chart.triangles = {0, 1};
+  chart.flat.xyz = {{-0.5, -0.5, -0.5}, {0.25, 0.25, -0.4375}, {-0.5, -0.5, -0.125},
+                    {-0.5, -0.5, -0.5}, {0.5, -0.25, 0.}, {0.25, 0.5, 0.25}};
+  chart.flat.tri = {{0, 1, 2}, {3, 4, 5}};
+  chart.corner_vertex = {0, 1, 2, 3, 4, 5};
+  for(unsigned polish : {0u, 2u}) {
+    SMP::internal::Chart_parameterization_settings settings;
+    settings.polish_iterations = polish;
+    SMP::internal::flatten_chart(chart, settings);
+    SMP_CHECK(!chart.ok, "a chart of two pieces was taken as flattened (polish " << polish << ")");
+  }
+  // the soup it came from, with the options the harness drew
+  const std::vector<Point> points = {Point(1, 1, 1), Point(-2, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, 1), Point(1, 1, -1.75), Point(-0.5, -2, 1), Point(1, 1, 1), Point(1, -1.75, -0.5), Point(-2, -2, -2), Point(-2, -2, -2), Point(0.5, -1.25, -2), Point(-2, -2, -2), Point(-2, -2, 1.5), Point(1.75, -2, -2), Point(-2, -2, -0.5), Point(-2, -2, -1.75), Point(-2, 1.5, 1.75), Point(1.5, 1.75, 1.5), Point(0.25, 1.25, 0.25), Point(-0.75, -1.25, -2)};
+  const std::vector<Polygon> polygons = {{10, 3}, {}, {6, 8, 13}, {}, {}, {}, {}, {}, {}, {}, {1, 1, 1, 1}, {}, {}, {10}, {21, 5, 21, 5}, {10, 3, 11, 0, 0, 0}, {}, {10, 3}, {}, {6, 8, 13}, {7, 7, 7}, {7, 7, 7, 7}, {7, 7, 7, 3}, {}, {6, 8, 13}, {21, 0, 3, 16}, {5, 14, 10, 20}, {20, 1, 20}, {8, 5, 21, 16, 18}, {5, 23, 10}, {}, {3, 4}, {6, 8, 12}, {5, 0}, {}, {8, 5, 9}, {23}, {6, 5, 24, 2, 8, 5}, {20, 6, 8, 20, 12, 14}, {}, {19, 24, 18, 20, 7}, {20, 2, 19}, {23, 20, 21, 20}, {15, 10, 20, 15, 21, 20}, {10, 20, 2}, {14, 23}, {16, 19, 20}, {10, 4}};
+  namespace P = SMP::parameters;
+  const SMP::Atlas a = SMP::make_atlas(points, polygons, P::max_stretch(2.7782352941176471).resolution(445u)
+                                       .gutter(1.7568627450980392).polish_iterations(2u).number_of_threads(1u));
+  std::size_t outside = 0;
+  for(const auto& polygon : a.uv)
+    for(const auto& q : polygon)
+      outside += q[0] >= 0. && q[0] <= 1. && q[1] >= 0. && q[1] <= 1. ? 0 : 1;
+  SMP_CHECK(a.report.status == SMP::OK && a.uv.size() == polygons.size() && outside == 0 && a.report.flipped_faces == 0,
+            "the soup of the chart of two pieces: " << a.report.message << ", " << outside << " uv outside the unit square, "
+            << a.report.flipped_faces << " flipped");
+}
+
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
 // two corners) has no triangle to chart; its polygons are still in a chart that exists.
 void only_flat_polygons()
@@ -462,6 +495,7 @@ int main(int argc, char** argv)
     return smp_test::summary();
   }
   bad_input();
+  chart_of_two_pieces();
   only_flat_polygons();
   scaled_soups();
   progress();

@@ -139,6 +139,11 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
         .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u));
     if(p.parameterize(sm, bhd, uvmap, vimap, vpmap) != OK)
       return;
+    // only the piece of `bhd` is flattened: a chart of pieces that touch at a repeated
+    // position only (not at a chart vertex) is split like a failed one
+    for(vertex_descriptor v : vd)
+      if(!get(vpmap, v))
+        return;
     chart.uv.resize(vd.size());
     for(std::size_t i = 0; i < vd.size(); ++i) {
       const K::Point_2& q = get(uvmap, vd[i]);
