@@ -24,8 +24,8 @@ for f in test/Stretch_minimizing_parameterization/fuzz/seeds/* \
   case "${f##*.}" in off) e=0 ;; obj) e=1 ;; ply) e=2 ;; stl) e=3 ;; *) continue ;; esac
   { prefix 0 $e; cat "$f"; } > "$seeds/reader-$(basename "$f")"
 done
-# soups: a few fixed byte strings for targets 1 (atlas) and 2 (parameterizer)
-for t in 1 2; do
+# soups: a few fixed byte strings for targets 1 (atlas), 2 (parameterizer) and 3 (remeshing)
+for t in 1 2 3; do
   for s in 1 2 3; do
     { printf "\\x$(printf %02x $t)"; head -c 600 /dev/zero | tr '\0' "\\$(printf %03o $((s * 37)))"; } > "$seeds/soup-$t-$s"
   done

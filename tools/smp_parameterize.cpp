@@ -7,6 +7,7 @@
 
 #include "render.h"
 #include "smp_input.h"
+#include "smp_output.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -311,25 +312,11 @@ fs::path output_folder(const Options& o)
   return fs::path(o.output);
 }
 
-// Writes `text` to `file` through a temporary name, so that a failure never leaves a file that
-// looks complete.
 void write_atomically(const fs::path& file, const std::string& text)
 {
-  const fs::path temporary = file.string() + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.flush();
-    if(!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      die("cannot write " + file.string());
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, file, ec);
-  if(ec)
-    die("cannot write " + file.string() + ": " + ec.message());
+  std::string error;
+  if(!smp_tools::write_atomically(file, text, error))
+    die(error);
 }
 
 // NAME.obj (`obj`: its text, which uses material "checker" of NAME.mtl), its MTL and its

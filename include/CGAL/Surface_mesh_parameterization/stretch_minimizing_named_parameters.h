@@ -26,6 +26,7 @@ enum number_of_threads_t { number_of_threads };
 enum max_stretch_t { max_stretch };
 enum resolution_t { resolution };
 enum gutter_t { gutter };
+enum parameterization_pair_t { parameterization_pair };
 } // namespace internal_np
 
 #ifndef DOXYGEN_RUNNING
@@ -39,7 +40,8 @@ enum gutter_t { gutter };
   CGAL_SMP_PACKAGE_LINK(step_rule) CGAL_SMP_PACKAGE_LINK(preset) CGAL_SMP_PACKAGE_LINK(descent_iterations) \
   CGAL_SMP_PACKAGE_LINK(polish_iterations) CGAL_SMP_PACKAGE_LINK(polish_time_budget)          \
   CGAL_SMP_PACKAGE_LINK(free_border) CGAL_SMP_PACKAGE_LINK(number_of_threads)                 \
-  CGAL_SMP_PACKAGE_LINK(max_stretch) CGAL_SMP_PACKAGE_LINK(resolution) CGAL_SMP_PACKAGE_LINK(gutter)
+  CGAL_SMP_PACKAGE_LINK(max_stretch) CGAL_SMP_PACKAGE_LINK(resolution) CGAL_SMP_PACKAGE_LINK(gutter) \
+  CGAL_SMP_PACKAGE_LINK(parameterization_pair)
 #define CGAL_add_named_parameter(X, Y, Z) CGAL_SMP_LINK(CGAL::internal_np::X, Z, K, const K&, )
 #define CGAL_add_named_parameter_with_compatibility(X, Y, Z) CGAL_SMP_LINK(CGAL::internal_np::X, Z, K, const K&, )
 #define CGAL_add_extra_named_parameter_with_compatibility(X, Y, Z) CGAL_SMP_LINK(CGAL::internal_np::X, Z, K, const K&, )
@@ -103,6 +105,7 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 /// | `max_stretch` | `make_atlas()`: a chart whose normalized L2 stretch is above this bound is cut further |
 /// | `resolution` | `make_atlas()`: texels along a side of the square texture |
 /// | `gutter` | `make_atlas()`: texels left between two charts |
+/// | `parameterization_pair` | `remesh_with_parameterizations()`: the parameterizations {U', U''} (a `Remeshing_pair`) |
 namespace parameters {
 
 using namespace CGAL::parameters;

@@ -8,7 +8,10 @@
 //   1: a polygon soup made from the bytes (special coordinates, bad indices, degenerate,
 //      repeated and non-manifold polygons) and options, made into an atlas;
 //   2: the same soup as a mesh, parameterized with options, presets and a border halfedge
-//      drawn from the bytes (interior or null ones too).
+//      drawn from the bytes (interior or null ones too);
+//   3: the same soup as a mesh, remeshed (a vertex count and a pair of parameterizations
+//      drawn from the bytes).
+// A mesh read in target 0 is remeshed too.
 // Any crash, sanitizer report, uncaught exception, hang (-timeout) or broken promise (abort
 // below) is a finding.
 
@@ -20,6 +23,7 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_atlas.h>
 
 #include <cmath>
@@ -187,6 +191,26 @@ bool to_mesh(const Soup& s, Mesh& mesh)
   return true;
 }
 
+// Remeshes `mesh`: a valid triangle mesh of finite points that is what the report says, or an
+// error with a message.
+void check_remeshing(const Mesh& mesh, Bytes& options)
+{
+  const std::size_t vertices = 3 + options.byte() % 120;
+  const SMP::Remeshing_pair pair = SMP::Remeshing_pair(options.byte() % 3);
+  Mesh out;
+  const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(
+      mesh, vertices, out, SMP::parameters::parameterization_pair(pair).number_of_threads(1u));
+  if(r.status != SMP::OK) {
+    promise(!r.message.empty(), "a remeshing error without a message");
+    return;
+  }
+  promise(out.is_valid(false) && CGAL::is_triangle_mesh(out), "a remeshed mesh that is not a valid triangle mesh");
+  promise(out.number_of_vertices() == r.vertices && out.number_of_faces() == r.faces, "a remeshing report that is not its mesh");
+  for(const auto v : out.vertices())
+    promise(std::isfinite(out.point(v).x()) && std::isfinite(out.point(v).y()) && std::isfinite(out.point(v).z()),
+            "a remeshed vertex that is not finite");
+}
+
 void fuzz_reader(Bytes& in)
 {
   static const char* const extensions[] = {"off", "obj", "ply", "stl"};
@@ -209,8 +233,10 @@ void fuzz_reader(Bytes& in)
   Mesh mesh;
   std::size_t isolated = 0;
   if(smp_tools::read_mesh(file, mesh, error, isolated)) {
-    if(mesh.number_of_faces() <= max_polygons && CGAL::is_triangle_mesh(mesh))
+    if(mesh.number_of_faces() <= max_polygons && CGAL::is_triangle_mesh(mesh)) {
       check_parameterizer(mesh, options);
+      check_remeshing(mesh, options);
+    }
   } else {
     promise(!error.empty(), "a mesh refused without a message");
   }
@@ -222,7 +248,7 @@ void fuzz_reader(Bytes& in)
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
   Bytes in{data, size};
-  switch(in.byte() % 3) {
+  switch(in.byte() % 4) {
   case 0:
     fuzz_reader(in);
     break;
@@ -231,11 +257,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     check_atlas(s.points, s.polygons, in);
     break;
   }
-  default: {
+  case 2: {
     const Soup s = make_soup(in);
     Mesh mesh;
     if(to_mesh(s, mesh) && CGAL::is_triangle_mesh(mesh))
       check_parameterizer(mesh, in);
+    break;
+  }
+  default: {
+    const Soup s = make_soup(in);
+    Mesh mesh;
+    if(to_mesh(s, mesh) && CGAL::is_triangle_mesh(mesh))
+      check_remeshing(mesh, in);
   }
   }
   return 0;

@@ -1,0 +1,321 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_REMESH_REMESHING_PIPELINE_H
+#define CGAL_SMP_INTERNAL_REMESH_REMESHING_PIPELINE_H
+
+// The stages of remesh_with_parameterizations() on a disk (with holes) copied into flat
+// arrays: the two parameterizations, the samples, the triangulation, the lift to 3D.
+
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
+#include <CGAL/Surface_mesh_parameterization/Remeshing_report.h>
+#include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/error_message.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Border_sampling.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Density_sampling.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_triangulation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Surface_delaunay_flips.h>
+
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// The input, copied, and its two parameterizations.
+struct Remeshing_input
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+  Mesh mesh;                          // vertices and faces numbered from 0, without gaps
+  Flat_triangles flat;                // the same, as arrays
+  std::vector<std::vector<int> > loops; // border loops, vertices by index
+  std::vector<Vec2> triangulation_uv, sampling_uv;
+};
+
+// The settings of remesh_with_parameterizations() that the stages read.
+struct Remeshing_settings
+{
+  std::size_t vertices = 0;
+  Remeshing_pair pair = Remeshing_pair::U0_UOPT;
+  std::chrono::steady_clock::time_point start;
+};
+
+inline double seconds_from(std::chrono::steady_clock::time_point t)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Angles, in degrees, and area spread of the triangles `tri` of `xyz` into `r`.
+inline void measure_triangles(const std::vector<Vec3>& xyz, const std::vector<Triangle>& tri, Remeshing_report& r)
+{
+  r.angle_histogram.fill(0);
+  r.min_angle = tri.empty() ? 0. : 180.;
+  std::size_t wide = 0;
+  double sum = 0., sum2 = 0.;
+  for(const Triangle& t : tri) {
+    for(int k = 0; k < 3; ++k) {
+      const Vec3 &p = xyz[std::size_t(t[k])], &q = xyz[std::size_t(t[(k + 1) % 3])], &s = xyz[std::size_t(t[(k + 2) % 3])];
+      const double a = angle3(sub3(q, p), sub3(s, p)) * 180. / CGAL_PI;
+      r.min_angle = (std::min)(r.min_angle, a);
+      ++r.angle_histogram[std::size_t((std::min)(17., (std::max)(0., std::floor(a / 10.))))];
+      wide += a >= 30. ? 1 : 0;
+    }
+    const double area = triangle_area(xyz[std::size_t(t[0])], xyz[std::size_t(t[1])], xyz[std::size_t(t[2])]);
+    sum += area;
+    sum2 += area * area;
+  }
+  if(!tri.empty()) {
+    const double n = double(tri.size()), mean = sum / n;
+    r.angles_at_least_30 = double(wide) / (3. * n);
+    r.area_variation = mean > 0. ? std::sqrt((std::max)(0., sum2 / n - mean * mean)) / mean : 0.;
+  }
+}
+
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
+
+// U' and U'' of `in.mesh` into `in` (U' = U^0; U'' as `pair` asks); `np` holds the
+// parameterizer's named parameters.
+template <typename NamedParameters>
+bool parameterize_for_remeshing(Remeshing_input& in, Remeshing_pair pair, const NamedParameters& np,
+                                Remeshing_report& r)
+{
+  typedef Remeshing_input::Mesh Mesh;
+  typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
+  typedef Circular_border_arc_length_parameterizer_3<Mesh> Border;
+  typedef Shape_preserving_parameterizer_3<Mesh, Border> Initial;
+  Mesh& mesh = in.mesh;
+  const auto bhd = Polygon_mesh_processing::longest_border(mesh).first;
+  if(bhd == boost::graph_traits<Mesh>::null_halfedge()) {
+    r.status = ERROR_NO_TOPOLOGICAL_DISC;
+    r.message = "the mesh has no border: remeshing takes a disk (with holes); cut a closed mesh open first";
+    return false;
+  }
+  auto uvmap = mesh.add_property_map<vertex_descriptor, Remeshing_input::K::Point_2>("v:smp_remesh_uv").first;
+  auto vimap = mesh.add_property_map<vertex_descriptor, int>("v:smp_remesh_index").first;
+  auto vpmap = mesh.add_property_map<vertex_descriptor, bool>("v:smp_remesh_done", false).first;
+  for(vertex_descriptor v : vertices(mesh))
+    put(vimap, v, int(v));
+  Stretch_minimizing_parameterizer_3<Mesh, Initial> p(np);
+  const auto run = [&](std::size_t steps, std::vector<Vec2>& uv, double& l2) {
+    const Error_code e = steps == 0 ? p.parameterize(mesh, bhd, uvmap, vimap, vpmap, parameters::number_of_iterations(0))
+                       : steps == 1 ? p.parameterize(mesh, bhd, uvmap, vimap, vpmap, parameters::number_of_iterations(1))
+                                    : p.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+    if(e != OK) {
+      r.status = e;
+      r.message = "the parameterization failed: " + p.report().message;
+      return false;
+    }
+    uv.resize(num_vertices(mesh));
+    for(vertex_descriptor v : vertices(mesh))
+      uv[std::size_t(v)] = {get(uvmap, v).x(), get(uvmap, v).y()};
+    l2 = p.report().l2_stretch();
+    return true;
+  };
+  if(!run(0, in.triangulation_uv, r.triangulation_l2_stretch))
+    return false;
+  if(pair == Remeshing_pair::U0) {
+    in.sampling_uv = in.triangulation_uv;
+    r.sampling_l2_stretch = r.triangulation_l2_stretch;
+    return true;
+  }
+  return run(pair == Remeshing_pair::U0_U1 ? 1 : 2, in.sampling_uv, r.sampling_l2_stretch);
+}
+
+CGAL_SMP_END_SOLVER_NAMESPACE
+
+// The border loops of `mesh` (vertex indices, in the order of the border halfedges).
+inline std::vector<std::vector<int> > border_loops(const Remeshing_input::Mesh& mesh)
+{
+  std::vector<std::vector<int> > loops;
+  std::vector<char> seen(num_halfedges(mesh), 0);
+  for(auto h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || seen[std::size_t(h)])
+      continue;
+    loops.emplace_back();
+    for(auto g = h; !seen[std::size_t(g)]; g = next(g, mesh)) {
+      seen[std::size_t(g)] = 1;
+      loops.back().push_back(int(source(g, mesh)));
+    }
+  }
+  return loops;
+}
+
+// The edge length of equilateral triangles that cover `area` with `vertices` vertices, of
+// which the ones on the border (of length `border`) are `border / length` (Euler's formula for
+// a disk: faces = 2 vertices - border vertices - 2).
+inline double target_edge_length(double area, double border, std::size_t vertices)
+{
+  const double a = 4. * area / std::sqrt(3.), c = 2. * double(vertices) - 2.;
+  const double x = (-border + std::sqrt(border * border + 4. * a * c)) / (2. * a); // 1 / length
+  return 1. / x;
+}
+
+// The new mesh as a soup (`xyz`, `tri`, oriented as the input) with `r` filled; false with `r`
+// telling why.
+inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& settings, std::vector<Vec3>& xyz,
+                        std::vector<Triangle>& tri, Remeshing_report& r)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Flat_triangles& m = in.flat;
+  double area = 0., border = 0.;
+  for(const Triangle& t : m.tri)
+    area += triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
+  for(const std::vector<int>& loop : in.loops)
+    for(std::size_t k = 0; k < loop.size(); ++k)
+      border += norm3(sub3(m.xyz[std::size_t(loop[(k + 1) % loop.size()])], m.xyz[std::size_t(loop[k])]));
+  if(!(area > 0.) || !std::isfinite(area) || !(border > 0.)) {
+    r.status = ERROR_WRONG_PARAMETER;
+    r.message = "the mesh has no area to sample";
+    return false;
+  }
+  const double spacing = target_edge_length(area, border, settings.vertices);
+
+  // the border: evenly spaced samples on each loop
+  std::vector<Edge_location> on_border;
+  std::vector<std::vector<int> > loops;
+  for(const std::vector<int>& loop : in.loops) {
+    loops.emplace_back();
+    for(const Edge_location& e : sample_loop(loop, m.xyz, spacing)) {
+      loops.back().push_back(int(on_border.size()));
+      on_border.push_back(e);
+    }
+  }
+  r.border_loops = loops.size();
+  if(on_border.size() + 3 > settings.vertices) {
+    r.status = ERROR_WRONG_PARAMETER;
+    r.message = "too few vertices asked for: the border loops alone take " + std::to_string(on_border.size());
+    return false;
+  }
+
+  // the interior: error diffusion of the area density of U'', as many samples as asked for
+  // once those too close to the border (closer than half the spacing, where they would make
+  // thin triangles with it) are left out
+  typedef std::vector<K::Segment_3>::const_iterator Segment_iterator;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator> > > Tree;
+  std::vector<K::Segment_3> chords;
+  for(const std::vector<int>& loop : loops)
+    for(std::size_t k = 0; k < loop.size(); ++k) {
+      const Vec3 a = on_border[std::size_t(loop[k])].in(m.xyz), b = on_border[std::size_t(loop[(k + 1) % loop.size()])].in(m.xyz);
+      chords.emplace_back(K::Point_3(a[0], a[1], a[2]), K::Point_3(b[0], b[1], b[2]));
+    }
+  Tree tree(chords.begin(), chords.end());
+  tree.accelerate_distance_queries();
+  const double band2 = 0.25 * spacing * spacing;
+  const std::size_t wanted = settings.vertices - on_border.size();
+  const std::size_t cells = (std::min)(std::size_t(1) << 23, (std::max)(std::size_t(1) << 16, 64 * settings.vertices));
+  const Density_raster raster = rasterize_density(m, in.sampling_uv, cells);
+  if(!(raster.total_area > 0.)) {
+    r.status = ERROR_WRONG_PARAMETER;
+    r.message = "the sampling parameterization covers no area";
+    return false;
+  }
+  // the count asked for is met once the samples the triangulation leaves out are known: the
+  // ones too close to the border in 3D (closer than half the spacing, where they would make
+  // thin triangles with it), and the ones beyond the border chords in U'
+  std::vector<Surface_location> inside;
+  std::vector<Vec2> points;
+  std::vector<Triangle> triangles;
+  std::vector<int> index;
+  double per_area = double(wanted) / raster.total_area;
+  r.seconds_sampling = seconds_from(t0);
+  for(int round = 0; round < 8; ++round) {
+    const auto t1 = std::chrono::steady_clock::now();
+    inside.clear();
+    for(const Surface_location& s : diffuse_samples(raster, m.tri, in.sampling_uv, per_area)) {
+      const Vec3 p = locate_in(s, m.tri, m.xyz);
+      if(tree.squared_distance(K::Point_3(p[0], p[1], p[2])) >= band2)
+        inside.push_back(s);
+    }
+    points.clear();
+    for(const Edge_location& e : on_border)
+      points.push_back(e.in(in.triangulation_uv));
+    for(const Surface_location& s : inside)
+      points.push_back(locate_in(s, m.tri, in.triangulation_uv));
+    for(const Vec2& p : points)
+      if(!std::isfinite(p[0]) || !std::isfinite(p[1])) {
+        r.status = ERROR_NO_1_TO_1_MAPPING;
+        r.message = "a point of the triangulation domain is not finite";
+        return false;
+      }
+    const auto t2 = std::chrono::steady_clock::now();
+    r.seconds_sampling += std::chrono::duration<double>(t2 - t1).count();
+    if(!triangulate_domain(points, loops, triangles, r.message)) {
+      r.status = ERROR_NO_1_TO_1_MAPPING;
+      return false;
+    }
+    index.assign(points.size(), -1);
+    std::size_t used = 0, used_inside = 0;
+    for(const Triangle& t : triangles)
+      for(int v : t)
+        if(index[std::size_t(v)] < 0) {
+          index[std::size_t(v)] = int(used++);
+          used_inside += std::size_t(v) < on_border.size() ? 0 : 1;
+        }
+    r.seconds_triangulation += seconds_from(t2);
+    if(used_inside == 0 || std::abs(double(used) - double(settings.vertices)) <= 0.002 * double(settings.vertices))
+      break;
+    per_area *= double(wanted) / double(used_inside);
+  }
+
+  // lifted to 3D, in the input's orientation, and flipped where U' is not conformal
+  const auto t3 = std::chrono::steady_clock::now();
+  double orientation = 0.;
+  for(const Triangle& t : m.tri)
+    orientation += twice_signed_area(in.triangulation_uv[std::size_t(t[0])], in.triangulation_uv[std::size_t(t[1])],
+                                     in.triangulation_uv[std::size_t(t[2])]);
+  const std::size_t b = on_border.size();
+  std::vector<Vec2> uv;
+  xyz.clear();
+  tri.clear();
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(index[v] >= 0) {
+      xyz.resize((std::max)(xyz.size(), std::size_t(index[v]) + 1));
+      uv.resize(xyz.size());
+      xyz[std::size_t(index[v])] = v < b ? on_border[v].in(m.xyz) : locate_in(inside[v - b], m.tri, m.xyz);
+      uv[std::size_t(index[v])] = points[v];
+      r.border_vertices += v < b ? 1 : 0;
+    }
+  for(Triangle t : triangles) {
+    if(orientation < 0.)
+      std::swap(t[1], t[2]);
+    for(int& v : t)
+      v = index[std::size_t(v)];
+    tri.push_back(t);
+  }
+  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(tri)) {
+    r.status = ERROR_NO_1_TO_1_MAPPING;
+    r.message = "the triangulation is not a manifold mesh (border loops too close to each other in the parameter domain)";
+    return false;
+  }
+  flip_to_surface_delaunay(xyz, uv, tri, 16);
+  r.seconds_triangulation += seconds_from(t3);
+  r.vertices = xyz.size();
+  r.faces = tri.size();
+  measure_triangles(xyz, tri, r);
+  return true;
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_REMESH_REMESHING_PIPELINE_H

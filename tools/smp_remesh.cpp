@@ -1,0 +1,199 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// smp-remesh: remeshes a disk-like triangle mesh file with two of its parameterizations
+// (remesh_with_parameterizations()) and writes the new mesh and a JSON report of its quality.
+// Run without arguments for the options.
+
+#include "smp_input.h"
+#include "smp_output.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/error_message.h>
+#include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/IO/PLY.h>
+
+#include <boost/program_options.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <new>
+#include <sstream>
+#include <string>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace PMP = CGAL::Polygon_mesh_processing;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Options
+{
+  std::string input, output, report, pair = "u0-uopt";
+  long long vertices = 0;
+  double eta = 1.;
+  int iterations = 20, threads = 0;
+  bool quiet = false;
+};
+
+// One clear line, then the exit status: 2 for a wrong command line, 1 for a failure.
+[[noreturn]] void die(const std::string& message, int status = 1)
+{
+  std::cerr << "smp-remesh: " << message << std::endl;
+  std::exit(status);
+}
+
+Options parse(int argc, char** argv)
+{
+  namespace po = boost::program_options;
+  Options o;
+  po::options_description described("options");
+  described.add_options()
+    ("help,h", "this text")
+    ("vertices,n", po::value(&o.vertices)->value_name("N"), "vertices of the new mesh (required)")
+    ("output,o", po::value(&o.output)->value_name("OUT"), "the new mesh: .off, .obj or .ply (required)")
+    ("pair", po::value(&o.pair)->value_name("P"),
+     "the parameterizations {U', U''}: u0, u0-u1 or u0-uopt (default): the mesh is triangulated in U' = U^0 "
+     "and sampled in U''")
+    ("report", po::value(&o.report)->value_name("JSON"), "the report (default: OUT with the extension .json)")
+    ("eta", po::value(&o.eta)->value_name("X"), "weight update exponent of U^1 and U^opt, 0 < X <= 1 (default 1)")
+    ("iterations", po::value(&o.iterations)->value_name("N"), "cap on the steps of U^opt (default 20)")
+    ("threads", po::value(&o.threads)->value_name("N"), "threads of the parameterization (default 0: one per core)")
+    ("quiet,q", po::bool_switch(&o.quiet), "no summary line");
+  po::options_description all;
+  all.add(described).add_options()("mesh", po::value(&o.input));
+  po::positional_options_description positional;
+  positional.add("mesh", 1);
+  po::variables_map vm;
+  try {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    po::notify(vm);
+  } catch(const po::error& e) {
+    die(std::string(e.what()) + " (run without arguments for the options)", 2);
+  }
+  if(vm.count("help") || o.input.empty()) {
+    (o.input.empty() && !vm.count("help") ? std::cerr : std::cout)
+      << "usage: smp-remesh MESH --vertices N -o OUT [options]\n"
+      << "  MESH: a triangle mesh (.off, .obj, .ply or .stl), one disk, holes allowed\n"
+      << described;
+    std::exit(vm.count("help") ? 0 : 2);
+  }
+  if(!vm.count("vertices") || o.vertices < 3 || o.vertices > (1LL << 29))
+    die("give --vertices N, a whole number from 3 to 2^29", 2);
+  if(o.output.empty())
+    die("give the output mesh with -o OUT (.off, .obj or .ply)", 2);
+  const std::string e = smp_tools::internal::lower_extension(o.output);
+  if(e != ".off" && e != ".obj" && e != ".ply")
+    die("the output mesh must end in .off, .obj or .ply: " + o.output, 2);
+  if(o.pair != "u0" && o.pair != "u0-u1" && o.pair != "u0-uopt")
+    die("option --pair: give u0, u0-u1 or u0-uopt", 2);
+  if(!std::isfinite(o.eta) || !(o.eta > 0.) || o.eta > 1.)
+    die("option --eta: give a number in (0, 1]", 2);
+  if(o.iterations < 1 || o.iterations > 10000)
+    die("option --iterations: give a whole number from 1 to 10000", 2);
+  if(o.threads < 0 || o.threads > 1024)
+    die("option --threads: give a whole number from 0 to 1024", 2);
+  if(o.report.empty())
+    o.report = fs::path(o.output).replace_extension(".json").string();
+  return o;
+}
+
+std::string mesh_text(const Mesh& mesh, const std::string& extension)
+{
+  std::ostringstream out;
+  const auto np = CGAL::parameters::stream_precision(17);
+  const bool ok = extension == ".obj" ? CGAL::IO::write_OBJ(out, mesh, np)
+                : extension == ".ply" ? CGAL::IO::write_PLY(out, mesh, np)
+                                     : CGAL::IO::write_OFF(out, mesh, np);
+  if(!ok)
+    die("cannot write the new mesh");
+  return out.str();
+}
+
+int run(int argc, char** argv)
+{
+  const Options o = parse(argc, argv);
+  Mesh mesh;
+  std::string error;
+  std::size_t isolated = 0;
+  if(!smp_tools::read_mesh(o.input, mesh, error, isolated))
+    die(error);
+  if(!CGAL::is_triangle_mesh(mesh))
+    die(o.input + " has faces that are not triangles: triangulate it first");
+
+  const SMP::Remeshing_pair pair = o.pair == "u0" ? SMP::Remeshing_pair::U0
+                                 : o.pair == "u0-u1" ? SMP::Remeshing_pair::U0_U1 : SMP::Remeshing_pair::U0_UOPT;
+  namespace P = SMP::parameters;
+  Mesh out;
+  const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(
+      mesh, std::size_t(o.vertices), out,
+      P::parameterization_pair(pair).eta(o.eta).number_of_iterations(std::size_t(o.iterations))
+        .number_of_threads(unsigned(o.threads)));
+  if(r.status != SMP::OK)
+    die("remeshing failed: " + std::string(SMP::error_message(r.status)) + ": " + r.message);
+
+  // distance between the surfaces, both ways, on points spread over each
+  const auto t = std::chrono::steady_clock::now();
+  const auto samples = CGAL::parameters::number_of_points_on_faces(100000);
+  const double hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(out, mesh, samples, samples);
+  const double seconds_hausdorff = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+  const CGAL::Bbox_3 box = PMP::bbox(mesh);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+
+  nlohmann::ordered_json j;
+  j["input"] = {{"file", o.input}, {"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)},
+                {"isolated_vertices_removed", isolated}, {"bounding_box_diagonal", diagonal}};
+  j["pair"] = o.pair;
+  j["vertices_asked"] = o.vertices;
+  j["vertices"] = r.vertices;
+  j["border_vertices"] = r.border_vertices;
+  j["faces"] = r.faces;
+  j["border_loops"] = r.border_loops;
+  j["triangulation_l2_stretch"] = r.triangulation_l2_stretch;
+  j["sampling_l2_stretch"] = r.sampling_l2_stretch;
+  j["min_angle_degrees"] = r.min_angle;
+  j["angles_at_least_30_degrees"] = r.angles_at_least_30;
+  j["angle_histogram_10_degree_bins"] = r.angle_histogram;
+  j["area_coefficient_of_variation"] = r.area_variation;
+  j["hausdorff_distance"] = hausdorff;
+  j["hausdorff_distance_over_diagonal"] = diagonal > 0. ? hausdorff / diagonal : 0.;
+  j["seconds"] = {{"parameterization", r.seconds_parameterization}, {"sampling", r.seconds_sampling},
+                  {"triangulation", r.seconds_triangulation}, {"remeshing", r.seconds}, {"hausdorff", seconds_hausdorff}};
+
+  // the mesh first: a report is never left beside a mesh that was not written
+  if(!smp_tools::write_atomically(o.output, mesh_text(out, smp_tools::internal::lower_extension(o.output)), error) ||
+     !smp_tools::write_atomically(o.report, j.dump(2) + "\n", error))
+    die(error);
+  if(!o.quiet)
+    std::cout << "smp-remesh: " << r.vertices << " vertices (" << r.border_vertices << " on " << r.border_loops
+              << " border loops), " << r.faces << " triangles; angles >= 30 degrees: " << 100. * r.angles_at_least_30
+              << "%, smallest " << r.min_angle << "; area variation " << r.area_variation << "; Hausdorff "
+              << hausdorff << "; " << r.seconds << " s\nwrote " << o.output << ", " << o.report << std::endl;
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  try {
+    return run(argc, argv);
+  } catch(const std::bad_alloc&) {
+    die("out of memory: the mesh is too large for the memory available");
+  } catch(const std::exception& e) {
+    die(std::string("unexpected error: ") + e.what());
+  }
+}
