@@ -168,6 +168,7 @@ int run(int argc, char** argv)
   j["angles_at_least_30_degrees"] = r.angles_at_least_30;
   j["angle_histogram_10_degree_bins"] = r.angle_histogram;
   j["area_coefficient_of_variation"] = r.area_variation;
+  j["wrong_faces"] = r.wrong_faces;
   j["hausdorff_distance"] = hausdorff;
   j["hausdorff_distance_over_diagonal"] = diagonal > 0. ? hausdorff / diagonal : 0.;
   j["seconds"] = {{"parameterization", r.seconds_parameterization}, {"sampling", r.seconds_sampling},
@@ -177,6 +178,9 @@ int run(int argc, char** argv)
   if(!smp_tools::write_atomically(o.output, mesh_text(out, smp_tools::internal::lower_extension(o.output)), error) ||
      !smp_tools::write_atomically(o.report, j.dump(2) + "\n", error))
     die(error);
+  if(r.wrong_faces > 0)
+    std::cerr << "smp-remesh: warning: " << r.wrong_faces << " triangles cross another or are turned against the "
+              << "surface (a part too thin for this vertex count: ask for more vertices)" << std::endl;
   if(!o.quiet)
     std::cout << "smp-remesh: " << r.vertices << " vertices (" << r.border_vertices << " on " << r.border_loops
               << " border loops), " << r.faces << " triangles; angles >= 30 degrees: " << 100. * r.angles_at_least_30

@@ -42,6 +42,7 @@ struct Remeshing_report
   std::array<std::size_t, 18> angle_histogram{}; ///< angles of the new triangles in bins of 10 degrees
   double angles_at_least_30 = 0.;     ///< fraction of the angles of 30 degrees or more
   double area_variation = 0.;         ///< coefficient of variation of the 3D areas of the new triangles
+  std::size_t wrong_faces = 0;        ///< new triangles that cross another or are turned against the input where they lie: 0 unless their repair gave up (see the manual)
   double seconds_parameterization = 0.; ///< computing U' and U''
   double seconds_sampling = 0.;       ///< the border and the interior samples
   double seconds_triangulation = 0.;  ///< the triangulation in U' and the lift to 3D

@@ -91,6 +91,8 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
   settings.start = std::chrono::steady_clock::now();
   settings.vertices = number_of_vertices;
   settings.pair = choose_parameter(get_parameter(np, internal_np::parameterization_pair), Remeshing_pair::U0_UOPT);
+  settings.relaxation_steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps),
+                                               settings.relaxation_steps);
   const auto fail = [&](Error_code e, const std::string& why) {
     r.status = e;
     r.message = why;

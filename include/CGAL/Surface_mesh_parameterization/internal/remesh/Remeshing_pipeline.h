@@ -16,6 +16,8 @@
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Border_sampling.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Density_sampling.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_locator.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_relaxation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Surface_delaunay_flips.h>
 
@@ -25,6 +27,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 
@@ -55,6 +58,7 @@ struct Remeshing_settings
 {
   std::size_t vertices = 0;
   Remeshing_pair pair = Remeshing_pair::U0_UOPT;
+  int relaxation_steps = 3;
   std::chrono::steady_clock::time_point start;
 };
 
@@ -228,13 +232,25 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     r.message = "the sampling parameterization covers no area";
     return false;
   }
-  // the count asked for is met once the samples the triangulation leaves out are known: the
+  // The count asked for is met once the samples the triangulation leaves out are known: the
   // ones too close to the border in 3D (closer than half the spacing, where they would make
-  // thin triangles with it), and the ones beyond the border chords in U'
+  // thin triangles with it), and the ones beyond the border chords in U'. Where the lifted
+  // mesh intersects itself or folds (where U' is so compressed that the order of the samples
+  // in it is lost to rounding), the samples of those triangles are taken out, and no sample
+  // is taken again from the input triangles they were in.
+  double orientation = 0.;
+  for(const Triangle& t : m.tri)
+    orientation += twice_signed_area(in.triangulation_uv[std::size_t(t[0])], in.triangulation_uv[std::size_t(t[1])],
+                                     in.triangulation_uv[std::size_t(t[2])]);
+  const std::size_t b = on_border.size();
   std::vector<Surface_location> inside;
-  std::vector<Vec2> points;
-  std::vector<Triangle> triangles;
-  std::vector<int> index;
+  std::vector<char> excluded(m.tri.size(), 0);
+  const Domain_locator locator(m.tri, in.triangulation_uv);
+  double domain_size = 0.; // for a tolerance
+  for(const Vec2& q : in.triangulation_uv)
+    domain_size = (std::max)({domain_size, std::abs(q[0]), std::abs(q[1])});
+  std::vector<Vec2> points, uv;
+  Lifted_mesh mesh;
   double per_area = double(wanted) / raster.total_area;
   r.seconds_sampling = seconds_from(t0);
   for(int round = 0; round < 8; ++round) {
@@ -242,72 +258,140 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     inside.clear();
     for(const Surface_location& s : diffuse_samples(raster, m.tri, in.sampling_uv, per_area)) {
       const Vec3 p = locate_in(s, m.tri, m.xyz);
-      if(tree.squared_distance(K::Point_3(p[0], p[1], p[2])) >= band2)
+      if(!excluded[std::size_t(s.face)] && tree.squared_distance(K::Point_3(p[0], p[1], p[2])) >= band2)
         inside.push_back(s);
     }
-    points.clear();
-    for(const Edge_location& e : on_border)
-      points.push_back(e.in(in.triangulation_uv));
-    for(const Surface_location& s : inside)
-      points.push_back(locate_in(s, m.tri, in.triangulation_uv));
-    for(const Vec2& p : points)
-      if(!std::isfinite(p[0]) || !std::isfinite(p[1])) {
+    r.seconds_sampling += seconds_from(t1);
+    const auto t2 = std::chrono::steady_clock::now();
+    for(int repair = 0;; ++repair) {
+      points.clear();
+      for(const Edge_location& e : on_border)
+        points.push_back(e.in(in.triangulation_uv));
+      for(const Surface_location& s : inside)
+        points.push_back(locate_in(s, m.tri, in.triangulation_uv));
+      for(const Vec2& p : points)
+        if(!std::isfinite(p[0]) || !std::isfinite(p[1])) {
+          r.status = ERROR_NO_1_TO_1_MAPPING;
+          r.message = "a point of the triangulation domain is not finite";
+          return false;
+        }
+      std::vector<Triangle> triangles;
+      if(!triangulate_domain(points, loops, triangles, r.message)) {
         r.status = ERROR_NO_1_TO_1_MAPPING;
-        r.message = "a point of the triangulation domain is not finite";
         return false;
       }
-    const auto t2 = std::chrono::steady_clock::now();
-    r.seconds_sampling += std::chrono::duration<double>(t2 - t1).count();
-    if(!triangulate_domain(points, loops, triangles, r.message)) {
-      r.status = ERROR_NO_1_TO_1_MAPPING;
-      return false;
-    }
-    index.assign(points.size(), -1);
-    std::size_t used = 0, used_inside = 0;
-    for(const Triangle& t : triangles)
-      for(int v : t)
-        if(index[std::size_t(v)] < 0) {
-          index[std::size_t(v)] = int(used++);
-          used_inside += std::size_t(v) < on_border.size() ? 0 : 1;
+      // the points in a triangle, numbered anew, lifted, in the input's orientation
+      std::vector<int> index(points.size(), -1);
+      std::vector<std::size_t> point_of;
+      std::vector<K::Point_3> lifted;
+      uv.clear();
+      for(Triangle& t : triangles) {
+        if(orientation < 0.)
+          std::swap(t[1], t[2]);
+        for(int& v : t) {
+          const std::size_t i = std::size_t(v);
+          if(index[i] < 0) {
+            index[i] = int(lifted.size());
+            const Vec3 p = i < b ? on_border[i].in(m.xyz) : locate_in(inside[i - b], m.tri, m.xyz);
+            lifted.emplace_back(p[0], p[1], p[2]);
+            uv.push_back(points[i]);
+            point_of.push_back(i);
+          }
+          v = index[i];
         }
-    r.seconds_triangulation += seconds_from(t2);
-    if(used_inside == 0 || std::abs(double(used) - double(settings.vertices)) <= 0.002 * double(settings.vertices))
-      break;
-    per_area *= double(wanted) / double(used_inside);
-  }
-
-  // lifted to 3D, in the input's orientation, and flipped where U' is not conformal
-  const auto t3 = std::chrono::steady_clock::now();
-  double orientation = 0.;
-  for(const Triangle& t : m.tri)
-    orientation += twice_signed_area(in.triangulation_uv[std::size_t(t[0])], in.triangulation_uv[std::size_t(t[1])],
-                                     in.triangulation_uv[std::size_t(t[2])]);
-  const std::size_t b = on_border.size();
-  std::vector<Vec2> uv;
-  xyz.clear();
-  tri.clear();
-  for(std::size_t v = 0; v < points.size(); ++v)
-    if(index[v] >= 0) {
-      xyz.resize((std::max)(xyz.size(), std::size_t(index[v]) + 1));
-      uv.resize(xyz.size());
-      xyz[std::size_t(index[v])] = v < b ? on_border[v].in(m.xyz) : locate_in(inside[v - b], m.tri, m.xyz);
-      uv[std::size_t(index[v])] = points[v];
-      r.border_vertices += v < b ? 1 : 0;
+      }
+      if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles)) {
+        r.status = ERROR_NO_1_TO_1_MAPPING;
+        r.message = "the triangulation is not a manifold mesh (border loops too close to each other in the parameter domain)";
+        return false;
+      }
+      mesh.clear();
+      Polygon_mesh_processing::polygon_soup_to_polygon_mesh(lifted, triangles, mesh);
+      flip_to_surface_delaunay(mesh, uv, 16);
+      relax_in_domain(mesh, uv, settings.relaxation_steps, orientation < 0. ? -1. : 1.,
+                      [&](Lifted_mesh::Vertex_index v, const Vec2& q) {
+                        const std::size_t i = point_of[std::size_t(v)];
+                        Surface_location s;
+                        if(i < b || !locator.locate(q, s))
+                          return false;
+                        const Vec2 found = locate_in(s, m.tri, in.triangulation_uv);
+                        if(std::abs(found[0] - q[0]) + std::abs(found[1] - q[1]) > 1e-9 * domain_size)
+                          return false; // outside the domain (in a hole, by a chord)
+                        inside[i - b] = s;
+                        points[i] = q;
+                        const Vec3 p = locate_in(s, m.tri, m.xyz);
+                        mesh.point(v) = K::Point_3(p[0], p[1], p[2]);
+                        return true;
+                      });
+      // the faces that cross another, and the ones turned against the input faces their
+      // corners are in
+      std::vector<Lifted_mesh::Face_index> wrong;
+      {
+        std::vector<std::pair<Lifted_mesh::Face_index, Lifted_mesh::Face_index> > crossing;
+        Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(crossing));
+        for(const auto& pair : crossing) {
+          wrong.push_back(pair.first);
+          wrong.push_back(pair.second);
+        }
+      }
+      for(const auto f : mesh.faces()) {
+        Vec3 corner[3], input_normal = {{0., 0., 0.}};
+        int k = 0;
+        for(const auto v : vertices_around_face(mesh.halfedge(f), mesh)) {
+          corner[k++] = {{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}};
+          const std::size_t i = point_of[std::size_t(v)];
+          if(i >= b) {
+            const Triangle& t = m.tri[std::size_t(inside[i - b].face)];
+            const Vec3& p = m.xyz[std::size_t(t[0])];
+            const Vec3 n = cross3(sub3(m.xyz[std::size_t(t[1])], p), sub3(m.xyz[std::size_t(t[2])], p));
+            const double length = norm3(n);
+            for(int j = 0; j < 3 && length > 0.; ++j)
+              input_normal[j] += n[j] / length;
+          }
+        }
+        if(dot3(cross3(sub3(corner[1], corner[0]), sub3(corner[2], corner[0])), input_normal) < 0.)
+          wrong.push_back(f);
+      }
+      std::sort(wrong.begin(), wrong.end());
+      wrong.erase(std::unique(wrong.begin(), wrong.end()), wrong.end());
+      r.wrong_faces = wrong.size();
+      if(wrong.empty() || repair == 16)
+        break;
+      std::vector<char> out(inside.size(), 0);
+      bool any = false;
+      for(const auto f : wrong)
+        for(const auto v : vertices_around_face(mesh.halfedge(f), mesh)) {
+          const std::size_t i = point_of[std::size_t(v)];
+          if(i >= b) {
+            out[i - b] = 1;
+            excluded[std::size_t(inside[i - b].face)] = 1;
+            any = true;
+          }
+        }
+      if(!any)
+        break;
+      std::size_t kept = 0;
+      for(std::size_t i = 0; i < inside.size(); ++i)
+        if(!out[i])
+          inside[kept++] = inside[i];
+      inside.resize(kept);
     }
-  for(Triangle t : triangles) {
-    if(orientation < 0.)
-      std::swap(t[1], t[2]);
-    for(int& v : t)
-      v = index[std::size_t(v)];
-    tri.push_back(t);
+    r.seconds_triangulation += seconds_from(t2);
+    const std::size_t used = mesh.number_of_vertices();
+    if(std::abs(double(used) - double(settings.vertices)) <= 0.002 * double(settings.vertices) || used <= b)
+      break;
+    per_area *= double(wanted) / double(used - b);
   }
-  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(tri)) {
-    r.status = ERROR_NO_1_TO_1_MAPPING;
-    r.message = "the triangulation is not a manifold mesh (border loops too close to each other in the parameter domain)";
-    return false;
+  xyz.clear();
+  for(const auto v : mesh.vertices())
+    xyz.push_back({{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}});
+  for(std::size_t v = 0; v < uv.size(); ++v)
+    r.border_vertices += mesh.is_border(Lifted_mesh::Vertex_index(Lifted_mesh::size_type(v))) ? 1 : 0;
+  tri.clear();
+  for(const auto f : mesh.faces()) {
+    const auto h = mesh.halfedge(f);
+    tri.push_back({{int(mesh.source(h)), int(mesh.target(h)), int(mesh.target(mesh.next(h)))}});
   }
-  flip_to_surface_delaunay(xyz, uv, tri, 16);
-  r.seconds_triangulation += seconds_from(t3);
   r.vertices = xyz.size();
   r.faces = tri.size();
   measure_triangles(xyz, tri, r);

@@ -1,0 +1,256 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// remesh_with_parameterizations(): the new mesh is a valid oriented triangle mesh on the input
+// surface with the input's border loops, about the number of vertices asked for, on analytic
+// cases (a planar disk, a cylinder patch) and the bundled meshes; {U^0, U^opt} samples more
+// evenly than {U^0}; bad input gets an error and leaves the output alone.
+
+#include "smp_test_util.h"
+#include "smp_test_mesh.h"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace SMP = CGAL::Surface_mesh_parameterization;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using smp_test::Mesh;
+using smp_test::Point_3;
+using smp_test::Vector_3;
+typedef smp_test::Kernel K;
+
+const SMP::Remeshing_pair all_pairs[] = {SMP::Remeshing_pair::U0, SMP::Remeshing_pair::U0_U1, SMP::Remeshing_pair::U0_UOPT};
+
+std::size_t border_loops(const Mesh& m)
+{
+  std::vector<smp_test::halfedge_descriptor> cycles;
+  PMP::extract_boundary_cycles(m, std::back_inserter(cycles));
+  return cycles.size();
+}
+
+double diagonal(const Mesh& m)
+{
+  const CGAL::Bbox_3 b = PMP::bbox(m);
+  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
+}
+
+// Everything promised of a new mesh `out` of `in` asked with `n` vertices.
+void check_remeshed(const Mesh& in, const Mesh& out, const SMP::Remeshing_report& r, std::size_t n, const std::string& name)
+{
+  SMP_CHECK(r.status == SMP::OK, name << ": " << r.message);
+  if(r.status != SMP::OK)
+    return;
+  SMP_CHECK(out.is_valid(false) && CGAL::is_triangle_mesh(out), name << ": not a valid triangle mesh");
+  SMP_CHECK(out.number_of_vertices() == r.vertices && out.number_of_faces() == r.faces, name << ": the report is not the mesh");
+  SMP_CHECK(std::abs(double(r.vertices) - double(n)) <= 0.02 * double(n), name << ": " << r.vertices << " vertices for " << n);
+  SMP_CHECK(border_loops(out) == border_loops(in) && r.border_loops == border_loops(in),
+            name << ": " << border_loops(out) << " border loops for " << border_loops(in));
+  const long euler_in = long(in.number_of_vertices()) - long(in.number_of_edges()) + long(in.number_of_faces());
+  const long euler_out = long(out.number_of_vertices()) - long(out.number_of_edges()) + long(out.number_of_faces());
+  SMP_CHECK(euler_in == euler_out, name << ": Euler characteristic " << euler_out << " for " << euler_in);
+  SMP_CHECK(!PMP::does_self_intersect(out) && r.wrong_faces == 0,
+            name << ": the new mesh intersects itself (" << r.wrong_faces << " wrong faces reported)");
+
+  // on the input surface, border on its border, faces turned as the input's
+  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  Tree tree(faces(in).first, faces(in).second, in);
+  std::vector<K::Segment_3> border;
+  for(auto h : halfedges(in))
+    if(is_border(h, in))
+      border.emplace_back(in.point(source(h, in)), in.point(target(h, in)));
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::const_iterator> > > Border_tree;
+  Border_tree border_tree(border.begin(), border.end());
+  const double tolerance = 1e-9 * diagonal(in);
+  std::size_t off_surface = 0, off_border = 0, on_border = 0, turned = 0;
+  for(auto v : out.vertices()) {
+    off_surface += std::sqrt(tree.squared_distance(out.point(v))) > tolerance;
+    if(is_border(v, out)) {
+      ++on_border;
+      off_border += std::sqrt(border_tree.squared_distance(out.point(v))) > tolerance;
+    }
+  }
+  // a face is turned if its normal is against the input's normals where its corners are (the
+  // sum of the normals of the input faces they lie on)
+  for(auto f : out.faces()) {
+    const auto h = halfedge(f, out);
+    const Point_3 &a = out.point(source(h, out)), &b = out.point(target(h, out)), &c = out.point(target(next(h, out), out));
+    Vector_3 there = CGAL::NULL_VECTOR;
+    for(const Point_3& p : {a, b, c})
+      there = there + PMP::compute_face_normal(tree.closest_point_and_primitive(p).second, in);
+    turned += CGAL::cross_product(b - a, c - a) * there < 0.;
+  }
+  SMP_CHECK(off_surface == 0, name << ": " << off_surface << " vertices off the input surface");
+  SMP_CHECK(off_border == 0 && on_border == r.border_vertices,
+            name << ": " << off_border << " border vertices off the input border, " << on_border << " on the border, "
+            << r.border_vertices << " reported");
+  SMP_CHECK(turned == 0, name << ": " << turned << " faces turned against the input");
+  std::cout << name << ": " << r.vertices << " vertices (" << r.border_vertices << " on the border), angles >= 30: "
+            << 100. * r.angles_at_least_30 << "%, smallest " << r.min_angle << ", area variation " << r.area_variation
+            << ", " << r.seconds << " s" << std::endl;
+}
+
+// A planar disk of radius 1 (rings of vertices around the center) and a half cylinder of
+// radius 1 and height 2: their new meshes are planar and on the cylinder within the input's chords.
+Mesh planar_disk(int rings, int sectors)
+{
+  Mesh m;
+  std::vector<std::vector<smp_test::vertex_descriptor> > ring(std::size_t(rings) + 1);
+  ring[0].push_back(m.add_vertex(Point_3(0, 0, 0)));
+  for(int r = 1; r <= rings; ++r)
+    for(int k = 0; k < r * sectors; ++k) {
+      const double a = 2. * CGAL_PI * k / (r * sectors), radius = double(r) / rings;
+      ring[std::size_t(r)].push_back(m.add_vertex(Point_3(radius * std::cos(a), radius * std::sin(a), 0)));
+    }
+  // ring r-1 to ring r: sector s has s... vertices; each edge of the outer ring makes a triangle
+  // with the inner ring's nearest vertex, and the gaps between them a triangle each
+  for(int r = 1; r <= rings; ++r) {
+    const auto& inner = ring[std::size_t(r - 1)];
+    const auto& outer = ring[std::size_t(r)];
+    const std::size_t no = outer.size(), ni = inner.size();
+    for(std::size_t k = 0; k < no; ++k) {
+      const std::size_t i0 = (k * ni) / no, i1 = ((k + 1) * ni) / no;
+      m.add_face(inner[i0 % ni], outer[k], outer[(k + 1) % no]);
+      if(i1 != i0 && ni > 1)
+        m.add_face(inner[i0 % ni], outer[(k + 1) % no], inner[i1 % ni]);
+    }
+  }
+  return m;
+}
+
+Mesh half_cylinder(int nu, int nv)
+{
+  smp_test::Grid g = smp_test::make_grid(nu, nv);
+  for(auto v : g.mesh.vertices()) {
+    const Point_3 p = g.mesh.point(v);
+    const double a = CGAL_PI * p.x() / nu;
+    g.mesh.point(v) = Point_3(std::cos(a), std::sin(a), 2. * p.y() / nv);
+  }
+  return g.mesh;
+}
+
+void analytic_cases()
+{
+  const Mesh disk = planar_disk(12, 6);
+  SMP_CHECK(disk.is_valid(false) && border_loops(disk) == 1, "the planar disk is not a disk");
+  for(const SMP::Remeshing_pair pair : all_pairs) {
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(disk, 400, out, SMP::parameters::parameterization_pair(pair));
+    check_remeshed(disk, out, r, 400, "planar disk, pair " + std::to_string(int(pair)));
+    double z = 0., radius = 0.;
+    for(auto v : out.vertices()) {
+      z = (std::max)(z, std::abs(out.point(v).z()));
+      radius = (std::max)(radius, std::hypot(out.point(v).x(), out.point(v).y()));
+    }
+    SMP_CHECK(z == 0. && radius <= 1. + 1e-12, "planar disk: |z| up to " << z << ", radius up to " << radius);
+    // a plane is mapped without distortion: the samples are even and the angles wide
+    SMP_CHECK(r.angles_at_least_30 >= 0.95 && r.area_variation < 0.3,
+              "planar disk: " << r.angles_at_least_30 << " of the angles >= 30 degrees, area variation " << r.area_variation);
+  }
+  const Mesh cylinder = half_cylinder(40, 16);
+  Mesh out;
+  const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(cylinder, 600, out);
+  check_remeshed(cylinder, out, r, 600, "half cylinder");
+  double off = 0.;
+  for(auto v : out.vertices())
+    off = (std::max)(off, 1. - std::hypot(out.point(v).x(), out.point(v).y()));
+  // inside the cylinder by at most the sagitta of the input's chords
+  SMP_CHECK(off >= -1e-12 && off <= 1. - std::cos(CGAL_PI / 80.) + 1e-12, "half cylinder: " << off << " inside");
+}
+
+// The bundled meshes: a disk with holes, a head; and the paper's claim on the head, where U^0
+// is far from area-preserving: {U^0, U^opt} spreads the areas more evenly than {U^0} at a
+// Hausdorff distance no larger.
+void bundled_meshes()
+{
+  const Mesh holes = smp_test::read_mesh("holes.off");
+  {
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(holes, 2000, out);
+    check_remeshed(holes, out, r, 2000, "holes.off");
+  }
+  const Mesh head = smp_test::read_mesh("mannequin-devil.off");
+  double variation[3], hausdorff[3];
+  for(const SMP::Remeshing_pair pair : all_pairs) {
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(head, 3000, out, SMP::parameters::parameterization_pair(pair));
+    check_remeshed(head, out, r, 3000, "mannequin-devil.off, pair " + std::to_string(int(pair)));
+    variation[int(pair)] = r.area_variation;
+    const auto samples = CGAL::parameters::number_of_points_on_faces(20000);
+    hausdorff[int(pair)] = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(out, head, samples, samples);
+  }
+  SMP_CHECK(variation[2] < variation[0] && hausdorff[2] <= 1.05 * hausdorff[0],
+            "mannequin-devil.off: area variation " << variation[2] << " with {U0, Uopt}, " << variation[0]
+            << " with {U0}; Hausdorff " << hausdorff[2] << " and " << hausdorff[0]);
+
+  // the result does not depend on the thread count, and a Polyhedron_3 gets the same mesh
+  Mesh one, two;
+  SMP::remesh_with_parameterizations(holes, 1000, one, SMP::parameters::number_of_threads(1u));
+  SMP::remesh_with_parameterizations(holes, 1000, two, SMP::parameters::number_of_threads(2u));
+  bool same = one.number_of_vertices() == two.number_of_vertices();
+  for(auto v : one.vertices())
+    same = same && one.point(v) == two.point(v);
+  SMP_CHECK(same, "holes.off: the new mesh depends on the thread count");
+  CGAL::Polyhedron_3<K> polyhedron, polyhedron_out;
+  CGAL::copy_face_graph(holes, polyhedron);
+  const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(polyhedron, 1000, polyhedron_out, SMP::parameters::number_of_threads(1u));
+  SMP_CHECK(r.status == SMP::OK && num_vertices(polyhedron_out) == one.number_of_vertices(),
+            "Polyhedron_3: " << r.message << ", " << num_vertices(polyhedron_out) << " vertices");
+}
+
+// Bad input: an error code and a message, the output mesh untouched.
+void bad_input()
+{
+  const auto expect = [](const Mesh& in, std::size_t n, SMP::Error_code code, const std::string& name) {
+    Mesh out = planar_disk(2, 3);
+    const std::size_t before = out.number_of_vertices();
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(in, n, out);
+    SMP_CHECK(r.status == code && !r.message.empty() && out.number_of_vertices() == before,
+              name << ": status " << r.status << " (" << r.message << "), " << out.number_of_vertices() << " vertices out");
+  };
+  const Mesh disk = planar_disk(6, 6);
+  expect(Mesh(), 100, SMP::ERROR_EMPTY_MESH, "empty mesh");
+  expect(disk, 2, SMP::ERROR_WRONG_PARAMETER, "2 vertices");
+  expect(disk, 5, SMP::ERROR_WRONG_PARAMETER, "fewer vertices than the border takes");
+  expect(smp_test::make_grid(4, 4, true).mesh, 100, SMP::ERROR_NON_TRIANGULAR_MESH, "quads");
+  Mesh nan = disk;
+  nan.point(*nan.vertices().begin()) = Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  expect(nan, 100, SMP::ERROR_WRONG_PARAMETER, "a NaN coordinate");
+  // two disks; a closed surface (two disks glued along their borders)
+  Mesh two = disk;
+  {
+    Mesh other = disk;
+    for(auto v : other.vertices())
+      other.point(v) = other.point(v) + Vector_3(3, 0, 0);
+    CGAL::copy_face_graph(other, two);
+  }
+  expect(two, 100, SMP::ERROR_NO_TOPOLOGICAL_DISC, "two components");
+  Mesh closed = disk;
+  PMP::triangulate_hole(closed, PMP::longest_border(closed).first, CGAL::Emptyset_iterator());
+  expect(closed, 100, SMP::ERROR_NO_TOPOLOGICAL_DISC, "a closed mesh");
+}
+
+int main()
+{
+  analytic_cases();
+  bundled_meshes();
+  bad_input();
+  return smp_test::summary();
+}
