@@ -40,11 +40,11 @@ struct Result
   std::string out, err;
 };
 
-// Runs the tool with `args`, capturing its output.
-Result run(const std::string& args)
+// Runs `tool` (smp-parameterize by default) with `args`, capturing its output.
+Result run(const std::string& args, const std::string& tool = SMP_TOOL)
 {
   const std::string out = "tool_stdout.txt", err = "tool_stderr.txt";
-  const int raw = std::system((std::string(SMP_TOOL) + " " + args + " > " + out + " 2> " + err).c_str());
+  const int raw = std::system((tool + " " + args + " > " + out + " 2> " + err).c_str());
   Result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   std::ifstream o(out), e(err);
@@ -57,9 +57,10 @@ Result run(const std::string& args)
 }
 
 // An error: non-zero exit, exactly one line on stderr that mentions `word`.
-void check_error(const std::string& what, const std::string& args, const std::string& word)
+void check_error(const std::string& what, const std::string& args, const std::string& word,
+                 const std::string& tool = SMP_TOOL)
 {
-  const Result r = run(args);
+  const Result r = run(args, tool);
   const std::size_t lines = std::size_t(std::count(r.err.begin(), r.err.end(), '\n'));
   SMP_CHECK(r.status != 0 && r.status != -1, what << ": exit status " << r.status);
   SMP_CHECK(lines == 1 && r.err.find(word) != std::string::npos, what << ": stderr was '" << r.err << "'");
@@ -335,11 +336,53 @@ void check_atlas()
             fs::exists("out_atlas_pictures/atlas_mix_checker_front.png"), "atlas pictures: " << r.err);
 }
 
+// smp-remesh: the mesh and its report, and the errors a user meets (none leaves a file).
+void check_remesh()
+{
+  const std::string nefertiti = smp_test::data_file("nefertiti.off");
+  fs::remove_all("out_remesh");
+  fs::create_directory("out_remesh");
+  const Result r = run(nefertiti + " -n 1500 -o out_remesh/nefertiti.off", SMP_REMESH_TOOL);
+  SMP_CHECK(r.status == 0, "smp-remesh: exit status " << r.status << ", " << r.err);
+  Mesh m;
+  SMP_CHECK(CGAL::IO::read_polygon_mesh("out_remesh/nefertiti.off", m) && m.is_valid(false) && CGAL::is_triangle_mesh(m) &&
+            m.number_of_vertices() >= 1470 && m.number_of_vertices() <= 1530,
+            "smp-remesh: the new mesh has " << m.number_of_vertices() << " vertices for 1500");
+  std::ifstream report("out_remesh/nefertiti.json");
+  std::stringstream text;
+  text << report.rdbuf();
+  SMP_CHECK(text.str().find("\"vertices\": " + std::to_string(m.number_of_vertices())) != std::string::npos &&
+            text.str().find("\"hausdorff_distance\"") != std::string::npos &&
+            text.str().find("\"wrong_faces\": 0") != std::string::npos,
+            "smp-remesh: the report is not the mesh's: " << text.str().substr(0, 300));
+  SMP_CHECK(run(nefertiti + " -n 800 --pair u0 -q -o out_remesh/nefertiti_u0.obj --report out_remesh/u0.json",
+                SMP_REMESH_TOOL).status == 0 && fs::exists("out_remesh/nefertiti_u0.obj") && fs::exists("out_remesh/u0.json"),
+            "smp-remesh: an OBJ with its report elsewhere");
+  const std::string out = " -o out_remesh/failed.off";
+  check_error("remesh: no vertex count", nefertiti + out, "--vertices", SMP_REMESH_TOOL);
+  check_error("remesh: 2 vertices", nefertiti + " -n 2" + out, "--vertices", SMP_REMESH_TOOL);
+  check_error("remesh: too few vertices for the border", nefertiti + " -n 4" + out, "border", SMP_REMESH_TOOL);
+  check_error("remesh: no output", nefertiti + " -n 100", "-o", SMP_REMESH_TOOL);
+  check_error("remesh: output format", nefertiti + " -n 100 -o out_remesh/failed.xyz", ".off", SMP_REMESH_TOOL);
+  check_error("remesh: unknown pair", nefertiti + " -n 100 --pair best" + out, "pair", SMP_REMESH_TOOL);
+  check_error("remesh: eta out of range", nefertiti + " -n 100 --eta 2" + out, "eta", SMP_REMESH_TOOL);
+  check_error("remesh: closed mesh", smp_test::data_file("bear.off") + " -n 100" + out, "border", SMP_REMESH_TOOL);
+  check_error("remesh: two components", "two.off -n 100" + out, "components", SMP_REMESH_TOOL);
+  check_error("remesh: quads", "quads.off -n 100" + out, "triangle", SMP_REMESH_TOOL);
+  check_error("remesh: unreadable file", "not_a_mesh.off -n 100" + out, "cannot read", SMP_REMESH_TOOL);
+  check_error("remesh: a NaN coordinate", "nan.off -n 100" + out, "nan.off", SMP_REMESH_TOOL);
+  std::size_t left = 0;
+  for(const auto& e : fs::directory_iterator("out_remesh"))
+    left += e.path().filename().string().find("failed") != std::string::npos || e.path().extension() == ".part";
+  SMP_CHECK(left == 0, "smp-remesh: " << left << " files left by the failed runs");
+}
+
 int main()
 {
   check_outputs();
   check_errors();
   check_isolated_vertex();
   check_atlas();
+  check_remesh();
   return smp_test::summary();
 }
