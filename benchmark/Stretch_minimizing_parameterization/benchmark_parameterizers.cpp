@@ -52,6 +52,7 @@
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
 
 #include "Intrinsic_parameterizer_3.h"
+#include "Sander_line_search.h"
 
 #include <Eigen/Core>
 
@@ -260,6 +261,42 @@ SMP::Error_code run_iterative_authalic(Context& c, Child_result& r)
   return e;
 }
 
+// Row (d): U^0 (the package's, as in row (b)), then Sander et al.'s line searches
+// (Sander_line_search.h) until a sweep gains less than 1e-4, at most `sander_seconds`.
+constexpr double sander_seconds = 300.;
+
+SMP::Error_code run_sander(Context& c, Child_result& r)
+{
+  SMP_benchmark::Sander_line_search_result result;
+  const SMP::Error_code e = timed(r, [&] {
+    Stretch_minimizer start(SMP::parameters::number_of_iterations(0));
+    const SMP::Error_code s = SMP::parameterize(c.mesh, start, c.bhd, c.uv);
+    if(s != SMP::OK)
+      return s;
+    namespace SMPI = SMP::internal;
+    SMPI::Flat_triangles m;
+    std::vector<SMPI::Vec2> uv;
+    for(vertex_descriptor v : vertices(c.mesh)) {
+      const Kernel::Point_3& p = c.mesh.point(v);
+      m.xyz.push_back({p.x(), p.y(), p.z()});
+      uv.push_back({get(c.uv, v).x(), get(c.uv, v).y()});
+    }
+    for(Mesh::Face_index f : faces(c.mesh)) {
+      const halfedge_descriptor h = halfedge(f, c.mesh);
+      m.tri.push_back({int(source(h, c.mesh)), int(target(h, c.mesh)), int(target(next(h, c.mesh), c.mesh))});
+    }
+    std::vector<char> fixed(uv.size(), 0);
+    for(vertex_descriptor v : vertices(c.mesh))
+      fixed[std::size_t(v)] = c.mesh.is_border(v);
+    result = SMP_benchmark::sander_line_search(m, uv, fixed, sander_seconds);
+    for(vertex_descriptor v : vertices(c.mesh))
+      put(c.uv, v, Kernel::Point_2(uv[std::size_t(v)][0], uv[std::size_t(v)][1]));
+    return SMP::OK;
+  });
+  set_text(r.steps, sizeof r.steps, std::to_string(result.sweeps) + " sweeps" + (result.capped ? " (time cap)" : ""));
+  return e;
+}
+
 std::vector<Method> all_methods()
 {
   const std::string square = "unit square, arc length";
@@ -277,6 +314,8 @@ std::vector<Method> all_methods()
      run_fixed<Floater>},
     {"c_intrinsic", "(c) Desbrun et al. intrinsic, 0.5 conformal + 0.5 authalic", square, bicgstab,
      run_fixed<Intrinsic>},
+    {"d_sander", "(d) Sander et al. 2001: per-vertex line searches on the L2 stretch from U^0 (cap 300 s)", square,
+     minimizer_solver + " (U^0)", run_sander},
     {"u0_minimizer", "U^0 alone: stretch minimizer, 0 steps (one factorization, two solves)", square,
      minimizer_solver, [](Context& c, Child_result& r) { return run_minimizer(c, r, 0, 1.); }},
     {"e_u1", "(e) U^1", square, minimizer_solver,
@@ -894,7 +933,9 @@ private:
         out << c.why << " | | | | | | | | | | | | |\n";
       }
     }
-    out << "\n(d) Sander et al. 2001 (the paper's reference) is not in CGAL and is not run.\n";
+    out << "\n(d) Sander et al. 2001 (the paper's reference), re-implemented in Sander_line_search.h: all vertices "
+           "from the start (Sander et al. go coarse to fine on a progressive mesh), capped at "
+        << sander_seconds << " s.\n";
     out << "(c): the authalic part of the blended weight is " << fmt(info.authalic_over_conformal, 3)
         << " times the conformal part (median over interior vertices): the blend depends on the units of the mesh.\n";
     const std::size_t ia = method_index("cgal_iterative_authalic");
