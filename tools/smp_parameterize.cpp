@@ -6,6 +6,7 @@
 // Run without arguments for the options.
 
 #include "render.h"
+#include "smp_command_line.h"
 #include "smp_input.h"
 #include "smp_output.h"
 
@@ -76,12 +77,7 @@ struct Options
   int resolution = 1024;
 };
 
-// One clear line, then the exit status: 2 for a wrong command line, 1 for a failure.
-[[noreturn]] void die(const std::string& message, int status = 1)
-{
-  std::cerr << "smp-parameterize: " << message << std::endl;
-  std::exit(status);
-}
+[[noreturn]] void die(const std::string& message, int status = 1) { smp_tools::fail("smp-parameterize", message, status); }
 
 Options parse(int argc, char** argv)
 {
@@ -125,23 +121,9 @@ Options parse(int argc, char** argv)
     ("up", po::value(&up)->value_name("A"), "the model's up axis in the pictures: x, y or z (default z)")
     ("no-pictures", po::bool_switch(&no_pictures), "write no PNG picture")
     ("quiet,q", po::bool_switch(&o.quiet), "no progress lines");
-  po::options_description all;
-  all.add(described).add_options()("mesh", po::value(&o.input));
-  po::positional_options_description positional;
-  positional.add("mesh", 1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    po::notify(vm);
-  } catch(const po::error& e) {
-    die(std::string(e.what()) + " (run without arguments for the options)", 2);
-  }
-  if(vm.count("help") || o.input.empty()) {
-    (o.input.empty() && !vm.count("help") ? std::cerr : std::cout)
-      << "usage: smp-parameterize MESH [options]\n  MESH: a triangle mesh (.off, .obj, .ply or .stl), or any polygon mesh with --atlas\n"
-      << described;
-    std::exit(vm.count("help") ? 0 : 2);
-  }
+  const po::variables_map vm = smp_tools::parse_command_line(
+      argc, argv, "smp-parameterize", described, o.input,
+      "usage: smp-parameterize MESH [options]\n  MESH: a triangle mesh (.off, .obj, .ply or .stl), or any polygon mesh with --atlas\n");
   // the ranges the parser does not know
   auto finite = [](const std::string& option, double x) {
     if(!std::isfinite(x))
@@ -572,12 +554,5 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-  // outputs are written atomically (write_atomically): an error here never leaves a partial file
-  try {
-    return run(argc, argv);
-  } catch(const std::bad_alloc&) {
-    die("out of memory: the mesh is too large for the memory available");
-  } catch(const std::exception& e) {
-    die(std::string("unexpected error: ") + e.what());
-  }
+  return smp_tools::run_guarded("smp-parameterize", run, argc, argv);
 }

@@ -5,6 +5,7 @@
 // (remesh_with_parameterizations()) and writes the new mesh and a JSON report of its quality.
 // Run without arguments for the options.
 
+#include "smp_command_line.h"
 #include "smp_input.h"
 #include "smp_output.h"
 
@@ -49,12 +50,7 @@ struct Options
   bool quiet = false;
 };
 
-// One clear line, then the exit status: 2 for a wrong command line, 1 for a failure.
-[[noreturn]] void die(const std::string& message, int status = 1)
-{
-  std::cerr << "smp-remesh: " << message << std::endl;
-  std::exit(status);
-}
+[[noreturn]] void die(const std::string& message, int status = 1) { smp_tools::fail("smp-remesh", message, status); }
 
 Options parse(int argc, char** argv)
 {
@@ -73,24 +69,10 @@ Options parse(int argc, char** argv)
     ("iterations", po::value(&o.iterations)->value_name("N"), "cap on the steps of U^opt (default 20)")
     ("threads", po::value(&o.threads)->value_name("N"), "threads of the parameterization (default 0: one per core)")
     ("quiet,q", po::bool_switch(&o.quiet), "no summary line");
-  po::options_description all;
-  all.add(described).add_options()("mesh", po::value(&o.input));
-  po::positional_options_description positional;
-  positional.add("mesh", 1);
-  po::variables_map vm;
-  try {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    po::notify(vm);
-  } catch(const po::error& e) {
-    die(std::string(e.what()) + " (run without arguments for the options)", 2);
-  }
-  if(vm.count("help") || o.input.empty()) {
-    (o.input.empty() && !vm.count("help") ? std::cerr : std::cout)
-      << "usage: smp-remesh MESH --vertices N -o OUT [options]\n"
-      << "  MESH: a triangle mesh (.off, .obj, .ply or .stl), one disk, holes allowed\n"
-      << described;
-    std::exit(vm.count("help") ? 0 : 2);
-  }
+  const po::variables_map vm = smp_tools::parse_command_line(
+      argc, argv, "smp-remesh", described, o.input,
+      "usage: smp-remesh MESH --vertices N -o OUT [options]\n"
+      "  MESH: a triangle mesh (.off, .obj, .ply or .stl), one disk, holes allowed\n");
   if(!vm.count("vertices") || o.vertices < 3 || o.vertices > (1LL << 29))
     die("give --vertices N, a whole number from 3 to 2^29", 2);
   if(o.output.empty())
@@ -195,11 +177,5 @@ int run(int argc, char** argv)
 
 int main(int argc, char** argv)
 {
-  try {
-    return run(argc, argv);
-  } catch(const std::bad_alloc&) {
-    die("out of memory: the mesh is too large for the memory available");
-  } catch(const std::exception& e) {
-    die(std::string("unexpected error: ") + e.what());
-  }
+  return smp_tools::run_guarded("smp-remesh", run, argc, argv);
 }
