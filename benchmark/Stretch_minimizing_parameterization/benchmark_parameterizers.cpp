@@ -856,7 +856,9 @@ private:
       from = s.str();
     }
     g = std::min(3., std::max(1., g));
-    const double predicted = last.second * std::pow(double(vertices) / last.first, g);
+    double predicted = last.second * std::pow(double(vertices) / last.first, g);
+    if(m_methods[m].id == "d_sander") // it stops at its own cap
+      predicted = std::min(predicted, sander_seconds);
     if(predicted <= m_options.budget || is_reference(m_methods[m].id))
       return false;
     std::ostringstream s;

@@ -210,9 +210,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     return false;
   }
 
-  // the interior: error diffusion of the area density of U'', as many samples as asked for
-  // once those too close to the border (closer than half the spacing, where they would make
-  // thin triangles with it) are left out
+  // the interior: error diffusion of the area density of U''
   typedef std::vector<K::Segment_3>::const_iterator Segment_iterator;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator> > > Tree;
   std::vector<K::Segment_3> chords;
@@ -391,6 +389,11 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   for(const auto f : mesh.faces()) {
     const auto h = mesh.halfedge(f);
     tri.push_back({{int(mesh.source(h)), int(mesh.target(h)), int(mesh.target(mesh.next(h)))}});
+  }
+  if(tri.empty()) {
+    r.status = ERROR_WRONG_PARAMETER;
+    r.message = "the new mesh has no triangle (the mesh is too degenerate to sample)";
+    return false;
   }
   r.vertices = xyz.size();
   r.faces = tri.size();
