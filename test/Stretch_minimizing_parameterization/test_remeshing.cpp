@@ -10,17 +10,15 @@
 #include "smp_test_mesh.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Surface_mesh_parameterization/internal/aabb_tree_compatibility.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
 
@@ -70,13 +68,13 @@ void check_remeshed(const Mesh& in, const Mesh& out, const SMP::Remeshing_report
 
   // on the input surface, border on its border, faces turned as the input's
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
+  typedef SMP::internal::Aabb_tree<K, Primitive> Tree;
   Tree tree(faces(in).first, faces(in).second, in);
   std::vector<K::Segment_3> border;
   for(auto h : halfedges(in))
     if(is_border(h, in))
       border.emplace_back(in.point(source(h, in)), in.point(target(h, in)));
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, std::vector<K::Segment_3>::const_iterator> > > Border_tree;
+  typedef SMP::internal::Aabb_tree<K, SMP::internal::Aabb_segment_primitive<K, std::vector<K::Segment_3>::const_iterator> > Border_tree;
   Border_tree border_tree(border.begin(), border.end());
   const double tolerance = 1e-9 * diagonal(in);
   std::size_t off_surface = 0, off_border = 0, on_border = 0, turned = 0;
@@ -233,7 +231,7 @@ void bad_input()
   Mesh nan = disk;
   nan.point(*nan.vertices().begin()) = Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   expect(nan, 100, SMP::ERROR_WRONG_PARAMETER, "a NaN coordinate");
-  // two disks; a closed surface (two disks glued along their borders)
+  // two disks; a closed surface
   Mesh two = disk;
   {
     Mesh other = disk;
@@ -242,8 +240,8 @@ void bad_input()
     CGAL::copy_face_graph(other, two);
   }
   expect(two, 100, SMP::ERROR_NO_TOPOLOGICAL_DISC, "two components");
-  Mesh closed = disk;
-  PMP::triangulate_hole(closed, PMP::longest_border(closed).first, CGAL::Emptyset_iterator());
+  Mesh closed;
+  CGAL::make_tetrahedron(Point_3(0, 0, 0), Point_3(1, 0, 0), Point_3(0, 1, 0), Point_3(0, 0, 1), closed);
   expect(closed, 100, SMP::ERROR_NO_TOPOLOGICAL_DISC, "a closed mesh");
 }
 

@@ -9,9 +9,7 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Density_sampling.h>
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Surface_mesh_parameterization/internal/aabb_tree_compatibility.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -25,7 +23,7 @@ class Domain_locator
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef std::vector<K::Triangle_3>::const_iterator Iterator;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_triangle_primitive<K, Iterator> > > Tree;
+  typedef Aabb_tree<K, Aabb_triangle_primitive<K, Iterator> > Tree;
 
 public:
   // The triangles `tri` laid out by `uv` (both kept by reference); the ones flat in the plane

@@ -21,9 +21,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Surface_delaunay_flips.h>
 
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
+#include <CGAL/Surface_mesh_parameterization/internal/aabb_tree_compatibility.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
@@ -212,7 +210,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
 
   // the interior: error diffusion of the area density of U''
   typedef std::vector<K::Segment_3>::const_iterator Segment_iterator;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_segment_primitive<K, Segment_iterator> > > Tree;
+  typedef Aabb_tree<K, Aabb_segment_primitive<K, Segment_iterator> > Tree;
   std::vector<K::Segment_3> chords;
   for(const std::vector<int>& loop : loops)
     for(std::size_t k = 0; k < loop.size(); ++k) {
