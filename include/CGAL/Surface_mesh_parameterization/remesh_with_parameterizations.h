@@ -39,8 +39,10 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// diffusion of a density that compensates the area distortion of U'' (so that they are
 /// spread evenly over the surface), carried to U' (\f$ U^0 \f$, Floater's shape-preserving
 /// parameterization with the border on a circle), triangulated there by CGAL's constrained
-/// Delaunay triangulation, and lifted to the surface. The closer U'' is to area-preserving, the
-/// less the sampling leans on the density, and the more evenly the surface is sampled.
+/// Delaunay triangulation, lifted to the surface, flipped toward the surface's Delaunay
+/// triangulation and relaxed. The closer U'' is to area-preserving, the less the sampling leans
+/// on the density, and the more evenly the surface is sampled. The manual's section on
+/// remeshing gives the stages and what they guarantee.
 ///
 /// Each border loop of the input is kept: the new border vertices are on it, evenly spaced.
 /// The new mesh has the input's orientation and about `number_of_vertices` vertices (within a
@@ -60,6 +62,12 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///     \cgalParamDescription{the parameterizations {U', U''}}
 ///     \cgalParamType{`Remeshing_pair`}
 ///     \cgalParamDefault{`Remeshing_pair::U0_UOPT`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_relaxation_steps}
+///     \cgalParamDescription{steps moving each interior vertex, in U', to the centroid of its
+///       triangles weighted by their surface areas (evens out the areas, widens the angles)}
+///     \cgalParamType{`unsigned int`}
+///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the points of `tmesh`}
