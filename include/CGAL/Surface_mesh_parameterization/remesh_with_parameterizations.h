@@ -15,7 +15,6 @@
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <array>
@@ -25,6 +24,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -54,7 +54,7 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///
 /// \param tmesh the input: one connected component with at least one border loop
 /// \param number_of_vertices the number of vertices of the new mesh
-/// \param out receives the new mesh (cleared first; written only on success)
+/// \param out receives the new mesh (replaced on success only)
 /// \param np an optional sequence of named parameters among the ones below
 ///
 /// \cgalNamedParamsBegin
@@ -168,8 +168,10 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
     out_points.reserve(xyz.size());
     for(const internal::Vec3& p : xyz)
       out_points.emplace_back(p[0], p[1], p[2]);
-    clear(out);
-    Polygon_mesh_processing::polygon_soup_to_polygon_mesh(out_points, tri, out);
+    // built aside, so that memory running out here leaves `out` as it was
+    PolygonMesh result;
+    Polygon_mesh_processing::polygon_soup_to_polygon_mesh(out_points, tri, result);
+    out = std::move(result);
   } catch(const std::bad_alloc&) {
     return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "out of memory (std::bad_alloc): the mesh is too large for the memory available");
   }
