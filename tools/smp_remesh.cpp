@@ -8,10 +8,9 @@
 #include "smp_command_line.h"
 #include "smp_input.h"
 #include "smp_output.h"
+#include "smp_surface_distance.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
@@ -127,14 +126,9 @@ int run(int argc, char** argv)
   if(r.status != SMP::OK)
     die("remeshing failed: " + std::string(SMP::error_message(r.status)) + ": " + r.message);
 
-  // distance between the surfaces, both ways, on a grid of points on each (random points made
-  // the figure vary from run to run)
   const auto t = std::chrono::steady_clock::now();
-  const CGAL::Bbox_3 box = PMP::bbox(mesh);
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
-  const auto samples = CGAL::parameters::use_grid_sampling(true).grid_spacing(diagonal / 1000.);
-  const double hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(out, mesh, samples, samples);
+  const double diagonal = smp_tools::bounding_box_diagonal(mesh);
+  const double hausdorff = smp_tools::symmetric_hausdorff_distance(out, mesh, diagonal);
   const double seconds_hausdorff = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 
   nlohmann::ordered_json j;

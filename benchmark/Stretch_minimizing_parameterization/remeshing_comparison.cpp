@@ -10,20 +10,19 @@
 //
 // Figures: vertices, angles (smallest, share of 30 degrees or more), coefficient of variation
 // of the triangle areas, symmetric Hausdorff distance to the input over its bounding box
-// diagonal (CGAL's approximate_symmetric_Hausdorff_distance on a grid of points spaced by a
-// thousandth of the diagonal on each side: random points made it vary by a third between runs),
+// diagonal (as smp-remesh reports it: tools/smp_surface_distance.h),
 // self-intersecting pairs (CGAL's self_intersections), time.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include "smp_surface_distance.h"
 
 #include <chrono>
 #include <cmath>
@@ -54,8 +53,7 @@ void row(const std::string& mesh_name, const std::string& method, const Mesh& in
     tri.push_back({int(out.source(h)), int(out.target(h)), int(out.target(out.next(h)))});
   }
   SMP::internal::measure_triangles(xyz, tri, q);
-  const auto samples = CGAL::parameters::use_grid_sampling(true).grid_spacing(diagonal / 1000.);
-  const double hausdorff = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Parallel_if_available_tag>(out, in, samples, samples);
+  const double hausdorff = smp_tools::symmetric_hausdorff_distance(out, in, diagonal);
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > crossing;
   PMP::self_intersections(out, std::back_inserter(crossing));
   std::printf("| %s | %s | %zu | %.1f | %.2f | %.3f | %.5f | %zu | %.2f |\n", mesh_name.c_str(), method.c_str(),
@@ -90,9 +88,7 @@ int main(int argc, char** argv)
       return 1;
     }
     const std::string name = std::filesystem::path(file).filename().string();
-    const CGAL::Bbox_3 b = PMP::bbox(in);
-    const double diagonal = std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
-                                      CGAL::square(b.zmax() - b.zmin()));
+    const double diagonal = smp_tools::bounding_box_diagonal(in);
     const auto write = [&](const std::string& method, const Mesh& m) {
       if(!out_dir.empty())
         CGAL::IO::write_polygon_mesh(out_dir + "/" + std::filesystem::path(file).stem().string() + "_" + method + ".off", m,

@@ -104,7 +104,7 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
   const auto fail = [&](Error_code e, const std::string& why) {
     r.status = e;
     r.message = why;
-    r.seconds = internal::seconds_from(settings.start);
+    r.seconds = internal::seconds_since(settings.start);
     return r;
   };
   if(number_of_vertices < 3 || number_of_vertices > std::size_t((std::numeric_limits<int>::max)() / 4))
@@ -153,15 +153,15 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
     }
     in.loops = internal::border_loops(in.mesh);
     if(!internal::parameterize_for_remeshing(in, settings.pair, np, r)) {
-      r.seconds = internal::seconds_from(settings.start);
+      r.seconds = internal::seconds_since(settings.start);
       return r;
     }
-    r.seconds_parameterization = internal::seconds_from(settings.start);
+    r.seconds_parameterization = internal::seconds_since(settings.start);
 
     std::vector<internal::Vec3> xyz;
     std::vector<internal::Triangle> tri;
     if(!internal::remesh_flat(in, settings, xyz, tri, r)) {
-      r.seconds = internal::seconds_from(settings.start);
+      r.seconds = internal::seconds_since(settings.start);
       return r;
     }
     std::vector<Output_point> out_points;
@@ -175,7 +175,7 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
   } catch(const std::bad_alloc&) {
     return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "out of memory (std::bad_alloc): the mesh is too large for the memory available");
   }
-  r.seconds = internal::seconds_from(settings.start);
+  r.seconds = internal::seconds_since(settings.start);
   return r;
 }
 

@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/wall_clock.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -88,11 +89,6 @@ Atlas_settings read_atlas_settings(const NamedParameters& np)
   s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
   s.visitor = make_atlas_visitor(get_parameter(np, CGAL::internal_np::visitor));
   return s;
-}
-
-inline double seconds_since(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
 struct Chart_areas

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_relaxation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Surface_delaunay_flips.h>
+#include <CGAL/Surface_mesh_parameterization/internal/wall_clock.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/aabb_tree_compatibility.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -59,11 +60,6 @@ struct Remeshing_settings
   int relaxation_steps = 3;
   std::chrono::steady_clock::time_point start;
 };
-
-inline double seconds_from(std::chrono::steady_clock::time_point t)
-{
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // Angles, in degrees, and area spread of the triangles `tri` of `xyz` into `r`.
 inline void measure_triangles(const std::vector<Vec3>& xyz, const std::vector<Triangle>& tri, Remeshing_report& r)
@@ -248,7 +244,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   std::vector<Vec2> points, uv;
   Lifted_mesh mesh;
   double per_area = double(wanted) / raster.total_area;
-  r.seconds_sampling = seconds_from(t0);
+  r.seconds_sampling = seconds_since(t0);
   for(int round = 0; round < 8; ++round) {
     const auto t1 = std::chrono::steady_clock::now();
     inside.clear();
@@ -257,7 +253,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       if(!excluded[std::size_t(s.face)] && tree.squared_distance(K::Point_3(p[0], p[1], p[2])) >= band2)
         inside.push_back(s);
     }
-    r.seconds_sampling += seconds_from(t1);
+    r.seconds_sampling += seconds_since(t1);
     const auto t2 = std::chrono::steady_clock::now();
     for(int repair = 0;; ++repair) {
       points.clear();
@@ -372,7 +368,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
           inside[kept++] = inside[i];
       inside.resize(kept);
     }
-    r.seconds_triangulation += seconds_from(t2);
+    r.seconds_triangulation += seconds_since(t2);
     const std::size_t used = mesh.number_of_vertices();
     if(std::abs(double(used) - double(settings.vertices)) <= 0.002 * double(settings.vertices) || used <= b)
       break;
