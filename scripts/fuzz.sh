@@ -2,7 +2,8 @@
 # Builds the libFuzzer harness (clang-14, ASan + UBSan) in build/fuzz and runs it for SECONDS
 # (default 120; CI runs it briefly, developers for hours: `bash scripts/fuzz.sh 3600`), on
 # JOBS processes (default 1). Seeds: the small bundled meshes and test/.../fuzz/seeds, made
-# into inputs of each target (fuzz_smp.cpp: the first byte chooses the target). The corpus
+# into inputs of each target (fuzz_smp.cpp: the first byte chooses the target), and the inputs
+# of earlier findings as they were (test/.../fuzz/regressions), run first every time. The corpus
 # grows in build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and
 # fails the script: reproduce it with `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
 set -euo pipefail
@@ -35,5 +36,5 @@ parallel=()
 [ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
 # allocator_may_return_null: an allocation too large throws std::bad_alloc, as without ASan
 ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp build/fuzz/corpus "$seeds" -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
+  build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp build/fuzz/corpus "$seeds" test/Stretch_minimizing_parameterization/fuzz/regressions -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
   -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 "${parallel[@]}"

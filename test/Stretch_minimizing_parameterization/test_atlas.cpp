@@ -23,9 +23,11 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -484,6 +486,92 @@ void only_flat_polygons()
     SMP_CHECK(a.uv.size() == polygons.size() && a.uv[f].size() == polygons[f].size(), "only flat polygons: corners lost");
 }
 
+// The packing skips most places when it searches one for a chart (whole free runs, rows that
+// cannot hold it, the rows of the chart in a chosen order); it must still find the place an
+// exhaustive search finds: the smallest square holding the charts so far, then the lowest top,
+// the first quarter turn, the leftmost corner. And no cell may go to two charts.
+void packing_search()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  const long limit = 96;
+  for(int trial = 0; trial < 24; ++trial) {
+    // charts: fans of 3 to 7 triangles with spokes of random lengths, some concave
+    const std::size_t n = std::size_t(6 + trial % 10);
+    const long pad = trial % 3;
+    std::vector<std::array<I::Chart_mask, 4> > masks(n);
+    std::vector<double> area(n);
+    for(std::size_t c = 0; c < n; ++c) {
+      const double size = 3. + 14. * unit(random);
+      const int spokes = 3 + int(c % 5);
+      std::vector<I::Vec2> uv{{0., 0.}};
+      std::vector<I::Triangle> tri;
+      for(int k = 0; k < spokes; ++k) {
+        const double a = 6.283185307179586 * (k + 0.4 * unit(random)) / spokes, r = size * (0.2 + 0.8 * unit(random));
+        uv.push_back({r * std::cos(a), r * std::sin(a)});
+        tri.push_back({0, 1 + k, 1 + (k + 1) % spokes});
+      }
+      I::Vec2 low = uv[0], high = uv[0];
+      for(const I::Vec2& q : uv)
+        for(int i = 0; i < 2; ++i) { low[i] = (std::min)(low[i], q[i]); high[i] = (std::max)(high[i], q[i]); }
+      for(I::Vec2& q : uv) q = {q[0] - low[0], q[1] - low[1]};
+      const I::Vec2 extent = {high[0] - low[0], high[1] - low[1]};
+      area[c] = std::floor(extent[0] * extent[1]); // ties in the order too
+      for(int k = 0; k < 4; ++k)
+        masks[c][std::size_t(k)] = I::chart_mask(I::turned_chart(uv, extent, k), tri, 1., pad);
+    }
+    std::vector<long> at_x, at_y;
+    std::vector<int> turn;
+    const long side = I::place_charts(masks, area, limit, at_x, at_y, turn);
+    SMP_CHECK(side > 0, "packing search, trial " << trial << ": the charts did not fit");
+    if(side <= 0) continue;
+
+    // the same charts placed again by trying every corner and every turn
+    std::vector<char> taken(std::size_t(limit * limit), 0);
+    auto cells = [&](const I::Chart_mask& m, long x, long y, const std::function<bool(std::size_t)>& visit) {
+      for(long r = 0; r < m.height(); ++r)
+        for(const I::Chart_mask::Span& s : m.rows[std::size_t(r)])
+          for(long col = x + s.first; col < x + s.second; ++col)
+            if(!visit(std::size_t((y + r) * limit + col))) return false;
+      return true;
+    };
+    std::vector<std::size_t> order(n);
+    for(std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&area](std::size_t a, std::size_t b) { return area[a] > area[b]; });
+    long square = 0;
+    for(std::size_t c : order) {
+      long best_square = -1, best_top = -1, best_x = -1, best_y = -1;
+      int best_turn = -1;
+      for(int k = 0; k < 4; ++k) {
+        const I::Chart_mask& m = masks[c][std::size_t(k)];
+        for(long y = 0; y + m.height() <= limit; ++y)
+          for(long x = 0; x + m.width <= limit; ++x) {
+            const long q = (std::max)({square, x + m.width, y + m.height()});
+            if(best_square >= 0 && (q > best_square || (q == best_square && y + m.height() >= best_top)))
+              continue;
+            if(!cells(m, x, y, [&](std::size_t i) { return !taken[i]; }))
+              continue;
+            best_square = q; best_top = y + m.height(); best_x = x; best_y = y; best_turn = k;
+          }
+      }
+      SMP_CHECK(best_x == at_x[c] && best_y == at_y[c] && best_turn == turn[c],
+                "packing search, trial " << trial << ", chart " << c << ": placed at (" << at_x[c] << ", " << at_y[c]
+                << ") turn " << turn[c] << ", the exhaustive search finds (" << best_x << ", " << best_y << ") turn " << best_turn);
+      if(best_x < 0) break;
+      bool disjoint = true;
+      cells(masks[c][std::size_t(turn[c])], at_x[c], at_y[c], [&](std::size_t i) {
+        disjoint = disjoint && !taken[i];
+        taken[i] = 1;
+        return true;
+      });
+      SMP_CHECK(disjoint, "packing search, trial " << trial << ": chart " << c << " shares a cell");
+      square = best_square;
+    }
+    SMP_CHECK(square == side, "packing search, trial " << trial << ": square " << side << ", exhaustively " << square);
+  }
+}
+
 int main(int argc, char** argv)
 {
   if(argc > 1) { // a mesh given on the command line
@@ -495,6 +583,7 @@ int main(int argc, char** argv)
     return smp_test::summary();
   }
   bad_input();
+  packing_search();
   chart_of_two_pieces();
   only_flat_polygons();
   scaled_soups();

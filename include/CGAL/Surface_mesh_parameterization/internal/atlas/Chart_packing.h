@@ -103,8 +103,37 @@ struct Chart_mask
   std::vector<std::vector<Span> > rows;
   long width = 0;
   std::vector<std::pair<long, long> > widest; // (span width, row), the widest span of each row first
+  std::vector<long> test_order;               // the rows a fit is tested on, in order
   long height() const { return long(rows.size()); }
 };
+
+// The rows of a chart that hold spans, in the order a fit tries them: the widest few first
+// (they collide most), then the others from coarse to fine (the middle row, the middles of
+// the halves, of the quarters, ...), so that whatever lies in the chart's way is met after a
+// few rows wherever it is, instead of after most rows when the wide ones are all on one side.
+inline void order_tests(Chart_mask& m)
+{
+  const std::size_t first = (std::min)(m.widest.size(), std::size_t(4));
+  std::vector<char> listed(m.rows.size(), 0);
+  m.test_order.clear();
+  for(std::size_t i = 0; i < first; ++i) {
+    m.test_order.push_back(m.widest[i].second);
+    listed[std::size_t(m.widest[i].second)] = 1;
+  }
+  std::vector<std::pair<long, long> > level{{0L, m.height()}}, next; // row ranges [a, b)
+  while(!level.empty()) {
+    next.clear();
+    for(const auto& range : level) {
+      if(range.first >= range.second) continue;
+      const long middle = range.first + (range.second - range.first) / 2;
+      if(!listed[std::size_t(middle)] && !m.rows[std::size_t(middle)].empty())
+        m.test_order.push_back(middle);
+      next.emplace_back(range.first, middle);
+      next.emplace_back(middle + 1, range.second);
+    }
+    level.swap(next);
+  }
+}
 
 // Merges the spans of one row into sorted disjoint ones.
 inline void merge_spans(std::vector<Chart_mask::Span>& row)
@@ -166,6 +195,7 @@ inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Tria
     if(w > 0) m.widest.emplace_back(w, r);
   }
   std::sort(m.widest.begin(), m.widest.end(), std::greater<std::pair<long, long> >());
+  order_tests(m);
   return m;
 }
 
@@ -190,8 +220,7 @@ public:
   // which it does not fit either (the span that collided has to pass the cells it met).
   bool fits(const Chart_mask& m, long x, long y, long& next_x) const
   {
-    for(const auto& w : m.widest) { // wide spans collide most: try them first
-      const long r = w.second;
+    for(const long r : m.test_order) {
       if(y + r >= height()) continue;
       const auto& row = rows_[std::size_t(y + r)];
       for(const Chart_mask::Span& s : m.rows[std::size_t(r)]) {
