@@ -374,6 +374,27 @@ void check_umfpack_lu()
   b.set(0, 1.);
   b.set(1, 2.);
   SMP_CHECK(!umfpack.linear_solver(S, b, x, D), "a singular matrix was solved");
+
+  // the 64-bit interface (taken for work areas near 2 GB) gives the same solutions, one or two
+  // columns at a time, and refuses the singular matrix too
+  typedef CGAL::Eigen_sparse_matrix<double>::EigenType Eigen_matrix;
+  SMP::internal::Umfpack_lu<Eigen_matrix> narrow, wide;
+  wide.always_64_bit(true);
+  const Eigen_matrix& E = A.eigen_object();
+  Eigen::MatrixXd rhs(n, 2), x32, x64;
+  for(int i = 0; i < n; ++i)
+    rhs.row(i) << std::sin(double(i)), std::cos(3. * i);
+  narrow.compute(E);
+  wide.compute(E);
+  const bool solved = narrow.info() == Eigen::Success && wide.info() == Eigen::Success &&
+                      narrow.solve_columns(rhs, x32, 2u) && wide.solve_columns(rhs, x64, 2u);
+  SMP_CHECK(solved && (x32 - x64).cwiseAbs().maxCoeff() < 1e-14 && (E * x64 - rhs).cwiseAbs().maxCoeff() < 1e-12,
+            "UMFPACK's 64-bit interface solves otherwise");
+  const Eigen::VectorXd one = wide.solve(rhs.col(0));
+  SMP_CHECK(wide.info() == Eigen::Success && (one - x32.col(0)).cwiseAbs().maxCoeff() < 1e-14,
+            "UMFPACK's 64-bit interface solves one column otherwise");
+  wide.compute(S.eigen_object());
+  SMP_CHECK(wide.info() != Eigen::Success, "a singular matrix was factored by the 64-bit interface");
 }
 
 // Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from

@@ -24,7 +24,10 @@
 // - the factors are freed as soon as they have served (`release_numeric()` after the solve: the
 //   stretch evaluation and the weight update that follow would otherwise add to them), and
 //   `release()` frees the analysis once the iteration is over;
-// - the columns of a right-hand side are solved in parallel (`solve_columns()`).
+// - the columns of a right-hand side are solved in parallel (`solve_columns()`);
+// - the 32-bit interface (`di`) is used while the work area is well under 2 GB, which it cannot
+//   exceed (UMFPACK then fails as out of memory), the 64-bit one (`dl`) beyond: a mesh of a few
+//   million vertices needs more, and the 64-bit indices take more memory on smaller ones.
 
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
@@ -34,6 +37,8 @@
 #include <umfpack.h>
 
 #include <algorithm>
+#include <climits>
+#include <new>
 #include <type_traits>
 #include <vector>
 
@@ -45,8 +50,47 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// `Matrix` is `Eigen::SparseMatrix<double>` (column-major, int indices: UMFPACK's `di` interface).
-// The matrix given to `factorize()` must outlive the solves that follow it.
+// UMFPACK's 64-bit index type (SuiteSparse_long before SuiteSparse 6, int64_t since), read off
+// its own declaration.
+template <typename R, typename I, typename... A>
+I first_parameter(R (*)(I, A...));
+typedef decltype(first_parameter(&umfpack_dl_symbolic)) Umfpack_index;
+
+// UMFPACK's real-valued functions for 32-bit (`di`) or 64-bit (`dl`) indices.
+template <typename Index>
+struct Umfpack_interface;
+
+template <>
+struct Umfpack_interface<int>
+{
+  static long symbolic(long n, const int* p, const int* i, const double* x, void** s, const double* c, double* r)
+  { return umfpack_di_symbolic(int(n), int(n), p, i, x, s, c, r); }
+  static long numeric(const int* p, const int* i, const double* x, void* s, void** f, const double* c, double* r)
+  { return umfpack_di_numeric(p, i, x, s, f, c, r); }
+  static long solve(const int* p, const int* i, const double* x, double* X, const double* B, void* f, const double* c,
+                    double* r, std::vector<int>& wi, std::vector<double>& w)
+  { return umfpack_di_wsolve(UMFPACK_A, p, i, x, X, B, f, c, r, wi.data(), w.data()); }
+  static void free_symbolic(void** s) { umfpack_di_free_symbolic(s); }
+  static void free_numeric(void** f) { umfpack_di_free_numeric(f); }
+};
+
+template <>
+struct Umfpack_interface<Umfpack_index>
+{
+  typedef Umfpack_index I;
+  static long symbolic(long n, const I* p, const I* i, const double* x, void** s, const double* c, double* r)
+  { return long(umfpack_dl_symbolic(I(n), I(n), p, i, x, s, c, r)); }
+  static long numeric(const I* p, const I* i, const double* x, void* s, void** f, const double* c, double* r)
+  { return long(umfpack_dl_numeric(p, i, x, s, f, c, r)); }
+  static long solve(const I* p, const I* i, const double* x, double* X, const double* B, void* f, const double* c,
+                    double* r, std::vector<I>& wi, std::vector<double>& w)
+  { return long(umfpack_dl_wsolve(UMFPACK_A, p, i, x, X, B, f, c, r, wi.data(), w.data())); }
+  static void free_symbolic(void** s) { umfpack_dl_free_symbolic(s); }
+  static void free_numeric(void** f) { umfpack_dl_free_numeric(f); }
+};
+
+// `Matrix` is `Eigen::SparseMatrix<double>` (column-major, int indices, copied to 64-bit ones
+// for the `dl` interface). The matrix given to `factorize()` must outlive the solves that follow it.
 template <typename Matrix>
 class Umfpack_lu
 {
@@ -76,6 +120,10 @@ public:
   Eigen::Index rows() const { return m_n; }
   Eigen::Index cols() const { return m_n; }
 
+  // The 64-bit interface whatever the size, from the next `analyzePattern()` on (for tests: it
+  // is otherwise chosen from the size of the work area).
+  void always_64_bit(bool on) { m_always_wide = on; }
+
   void compute(const Matrix& A)
   {
     analyzePattern(A);
@@ -92,22 +140,11 @@ public:
       m_info = Eigen::InvalidInput;
       return;
     }
-    const bool metis = m_n >= metis_threshold;
-    m_control[UMFPACK_ORDERING] = metis ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
-    int status = symbolic(C);
-    if(metis && status != UMFPACK_OK) {
-      m_control[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
-      status = symbolic(C);
-    }
-    m_info = status == UMFPACK_OK ? Eigen::Success : Eigen::NumericalIssue;
-    m_large = metis;
-    m_work_units = 0.;
-    // With the symmetric strategy (diagonal pivots, as on these diagonally dominant systems),
-    // the estimate of the factors is close; otherwise UMFPACK's default applies.
-    if(m_info == Eigen::Success && m_report[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC) {
-      // 5% above the factors: the frontal matrices share the area (2% on top, measured)
-      m_work_units = (std::max)(1.05 * m_report[UMFPACK_SYMMETRIC_LUNZ],
-                                m_report[UMFPACK_VARIABLE_INIT_ESTIMATE]);
+    m_wide = m_always_wide;
+    analyze(C);
+    if(m_info == Eigen::Success && !m_wide && !fits_32_bits()) {
+      go_wide();
+      analyze(C);
     }
   }
 
@@ -119,14 +156,24 @@ public:
       return;
     }
     m_matrix = &compressed(A);
-    // a negative value is an absolute size, in UMFPACK's units
-    m_control[UMFPACK_ALLOC_INIT] = m_work_units > 0. ? -m_work_units : 0.7;
+    if(m_wide)
+      copy_pattern(*m_matrix);
 #if defined(__GLIBC__)
     if(m_large)
       malloc_trim(0); // cheap next to the factorization
 #endif
-    const int status = umfpack_di_numeric(m_matrix->outerIndexPtr(), m_matrix->innerIndexPtr(),
-                                          m_matrix->valuePtr(), m_symbolic, &m_numeric, m_control, m_report);
+    long status = numeric();
+    if(status == UMFPACK_ERROR_out_of_memory && !m_wide) { // the estimate was short: the 64-bit interface
+      go_wide();
+      analyze(*m_matrix);
+      copy_pattern(*m_matrix);
+      status = m_info == Eigen::Success ? numeric() : long(UMFPACK_ERROR_internal_error);
+    }
+    if(status == UMFPACK_ERROR_out_of_memory) { // told as such by the parameterizers
+      release_numeric();
+      m_info = Eigen::NumericalIssue;
+      throw std::bad_alloc();
+    }
     if(status != UMFPACK_OK) { // a singular matrix gets factors too: they are not used
       release_numeric();
       m_info = Eigen::NumericalIssue;
@@ -159,28 +206,16 @@ public:
     X.resize(m_n, columns);
     if(m_numeric == nullptr || B.rows() != m_n)
       return false;
-    // one workspace per column: the columns are solved at the same time
-    const std::size_t c = static_cast<std::size_t>(columns), n = static_cast<std::size_t>(m_n);
-    std::vector<char> ok(c, 0);
-    std::vector<std::vector<int> > wi(c, std::vector<int>(n));
-    std::vector<std::vector<double> > w(c, std::vector<double>(n));
-    parallel_for(std::size_t(columns), m_n >= Eigen::Index(parallel_grain) ? threads : 1u, 1,
-                 [&](std::size_t begin, std::size_t end) {
-      double report[UMFPACK_INFO];
-      for(std::size_t j = begin; j < end; ++j)
-        ok[j] = umfpack_di_wsolve(UMFPACK_A, m_matrix->outerIndexPtr(), m_matrix->innerIndexPtr(),
-                                  m_matrix->valuePtr(), X.col(Eigen::Index(j)).data(),
-                                  B.col(Eigen::Index(j)).data(), m_numeric, m_control, report,
-                                  wi[j].data(), w[j].data()) == UMFPACK_OK;
-    });
-    return std::find(ok.begin(), ok.end(), 0) == ok.end();
+    return m_wide ? solve_columns(Umfpack_interface<Umfpack_index>(), m_columns.data(), m_rows.data(), B, X, threads)
+                  : solve_columns(Umfpack_interface<int>(), m_matrix->outerIndexPtr(), m_matrix->innerIndexPtr(),
+                                  B, X, threads);
   }
 
   // Frees the numeric factorization; the next use starts with `factorize()`.
   void release_numeric()
   {
     if(m_numeric != nullptr)
-      umfpack_di_free_numeric(&m_numeric);
+      m_wide ? Umfpack_interface<Umfpack_index>::free_numeric(&m_numeric) : Umfpack_interface<int>::free_numeric(&m_numeric);
     m_numeric = nullptr;
   }
 
@@ -188,11 +223,11 @@ public:
   void release()
   {
     release_numeric();
-    if(m_symbolic != nullptr)
-      umfpack_di_free_symbolic(&m_symbolic);
-    m_symbolic = nullptr;
+    free_symbolic();
     m_matrix = nullptr;
     m_own = Matrix();
+    std::vector<Umfpack_index>().swap(m_columns);
+    std::vector<Umfpack_index>().swap(m_rows);
     m_work_units = 0.;
   }
 
@@ -207,13 +242,97 @@ private:
     return m_own;
   }
 
-  int symbolic(const Matrix& C)
+  // the column starts and row indices of `C` in 64-bit indices
+  void copy_pattern(const Matrix& C)
+  {
+    m_columns.assign(C.outerIndexPtr(), C.outerIndexPtr() + C.outerSize() + 1);
+    m_rows.assign(C.innerIndexPtr(), C.innerIndexPtr() + C.nonZeros());
+  }
+
+  // frees what the 32-bit interface made, and switches to the 64-bit one
+  void go_wide()
+  {
+    release_numeric();
+    free_symbolic();
+    m_wide = true;
+  }
+
+  void free_symbolic()
   {
     if(m_symbolic != nullptr)
-      umfpack_di_free_symbolic(&m_symbolic);
+      m_wide ? Umfpack_interface<Umfpack_index>::free_symbolic(&m_symbolic) : Umfpack_interface<int>::free_symbolic(&m_symbolic);
     m_symbolic = nullptr;
-    return umfpack_di_symbolic(int(m_n), int(m_n), C.outerIndexPtr(), C.innerIndexPtr(), C.valuePtr(),
-                               &m_symbolic, m_control, m_report);
+  }
+
+  // The symbolic analysis of `C` with the interface of `m_wide` (METIS on large systems, AMD if
+  // METIS fails), and the size of the work area it predicts.
+  void analyze(const Matrix& C)
+  {
+    const bool metis = m_n >= metis_threshold;
+    m_control[UMFPACK_ORDERING] = metis ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
+    long status = symbolic(C);
+    if(metis && status != UMFPACK_OK) {
+      m_control[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
+      status = symbolic(C);
+    }
+    m_info = status == UMFPACK_OK ? Eigen::Success : Eigen::NumericalIssue;
+    m_large = metis;
+    m_work_units = 0.;
+    // With the symmetric strategy (diagonal pivots, as on these diagonally dominant systems),
+    // the estimate of the factors is close; otherwise UMFPACK's default applies.
+    if(m_info == Eigen::Success && m_report[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC) {
+      // 5% above the factors: the frontal matrices share the area (2% on top, measured)
+      m_work_units = (std::max)(1.05 * m_report[UMFPACK_SYMMETRIC_LUNZ],
+                                m_report[UMFPACK_VARIABLE_INIT_ESTIMATE]);
+    }
+  }
+
+  // whether the work area the analysis predicts (or, without one, UMFPACK's upper bound) is
+  // under half of what 32-bit indices allow: a margin for the estimate; factorize() switches
+  // interfaces if it is still short
+  bool fits_32_bits() const
+  {
+    const double units = m_work_units > 0. ? m_work_units : m_report[UMFPACK_VARIABLE_PEAK_ESTIMATE];
+    return units * double(sizeof(double)) < 0.5 * double(INT_MAX);
+  }
+
+  long symbolic(const Matrix& C)
+  {
+    free_symbolic();
+    if(!m_wide)
+      return Umfpack_interface<int>::symbolic(long(m_n), C.outerIndexPtr(), C.innerIndexPtr(), C.valuePtr(),
+                                              &m_symbolic, m_control, m_report);
+    copy_pattern(C);
+    return Umfpack_interface<Umfpack_index>::symbolic(long(m_n), m_columns.data(), m_rows.data(), C.valuePtr(),
+                                                      &m_symbolic, m_control, m_report);
+  }
+
+  long numeric()
+  {
+    // a negative value is an absolute size, in UMFPACK's units
+    m_control[UMFPACK_ALLOC_INIT] = m_work_units > 0. ? -m_work_units : 0.7;
+    return m_wide ? Umfpack_interface<Umfpack_index>::numeric(m_columns.data(), m_rows.data(), m_matrix->valuePtr(),
+                                                              m_symbolic, &m_numeric, m_control, m_report)
+                  : Umfpack_interface<int>::numeric(m_matrix->outerIndexPtr(), m_matrix->innerIndexPtr(),
+                                                    m_matrix->valuePtr(), m_symbolic, &m_numeric, m_control, m_report);
+  }
+
+  template <typename Interface, typename Index, typename Result>
+  bool solve_columns(Interface, const Index* columns, const Index* rows, const Eigen::MatrixXd& B, Result& X,
+                     unsigned int threads) const
+  {
+    // one workspace per column: the columns are solved at the same time
+    const std::size_t c = static_cast<std::size_t>(B.cols()), n = static_cast<std::size_t>(m_n);
+    std::vector<char> ok(c, 0);
+    std::vector<std::vector<Index> > wi(c, std::vector<Index>(n));
+    std::vector<std::vector<double> > w(c, std::vector<double>(n));
+    parallel_for(c, m_n >= Eigen::Index(parallel_grain) ? threads : 1u, 1, [&](std::size_t begin, std::size_t end) {
+      double report[UMFPACK_INFO];
+      for(std::size_t j = begin; j < end; ++j)
+        ok[j] = Interface::solve(columns, rows, m_matrix->valuePtr(), X.col(Eigen::Index(j)).data(),
+                                 B.col(Eigen::Index(j)).data(), m_numeric, m_control, report, wi[j], w[j]) == UMFPACK_OK;
+    });
+    return std::find(ok.begin(), ok.end(), 0) == ok.end();
   }
 
   double m_control[UMFPACK_CONTROL];
@@ -226,6 +345,9 @@ private:
   mutable Eigen::ComputationInfo m_info = Eigen::InvalidInput;
   double m_work_units = 0.;         // size of the work area of the next factorization (0: UMFPACK's default)
   bool m_large = false;
+  bool m_wide = false;              // the 64-bit interface, on m_columns and m_rows
+  bool m_always_wide = false;
+  std::vector<Umfpack_index> m_columns, m_rows; // the pattern in 64-bit indices, when m_wide
 };
 
 } // namespace internal
