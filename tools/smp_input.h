@@ -130,18 +130,22 @@ inline bool check_off(std::istream& in, std::uintmax_t bytes, std::string& error
 }
 
 // A PLY header: counts that the file can hold (CGAL reserves them), and no property before the
-// first element (CGAL 5.5.1 adds it to the last element, of which there is none).
+// first element (CGAL 5.5.1 adds it to the last element, of which there is none). Read as CGAL
+// reads it: the signature and the format on the first two lines, whatever they hold, then one
+// keyword a line up to end_header.
 inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error)
 {
   std::string line;
   double announced = 0.;
   bool element = false;
-  while(std::getline(in, line) && line.rfind("end_header", 0) != 0) {
+  for(int number = 1; std::getline(in, line); ++number) {
     std::istringstream fields(line);
     std::string word, name, count;
     double n = 0.;
-    if(!(fields >> word))
+    if(number <= 2 || !(fields >> word))
       continue;
+    if(word == "end_header")
+      break;
     if(word == "element") {
       element = true;
       if(fields >> name >> count && whole_number(count, n))

@@ -245,6 +245,12 @@ void check_errors()
   std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
                                          "property float y\nend_header\n0 0\n";
   check_error("PLY property before any element", "property_first.ply --atlas", "property");
+  // found by the fuzz harness: CGAL reads the second line as the format whatever it holds, so a
+  // header ends at a line whose first word is end_header, from the third line on
+  std::ofstream("end_header_second.ply") << "ply\nend_header format ascii 1.0\nproperty float x\nelement vertex 1\n"
+                                            "property float y\nend_header\n0 0\n";
+  check_error("PLY property before any element, after a second line that starts with end_header",
+              "end_header_second.ply --atlas", "property");
   // found by the fuzz harness: CGAL 5.5.1 converts a face's numbers to unsigned integers unchecked
   std::ofstream("negative_count.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-1.5 0 1 2\n";
   check_error("OFF face of a negative vertex count", "negative_count.off --atlas", "face 0");
