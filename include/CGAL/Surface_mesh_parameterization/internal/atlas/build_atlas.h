@@ -5,8 +5,9 @@
 #define CGAL_SMP_INTERNAL_ATLAS_BUILD_ATLAS_H
 
 // The atlas of a triangulated soup: charts grown, flattened and cut while above the stretch
-// bound, packed (the longest cut across while the square is poorly filled), then written per
-// polygon corner with the report's measures. make_atlas() reads the input and calls it.
+// bound (in two, or in several parts at once when far above it), packed (the longest cut
+// across while the square is poorly filled), then written per polygon corner with the report's
+// measures. make_atlas() reads the input and calls it.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -14,6 +15,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Atlas_input.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_partition.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/wall_clock.h>
@@ -168,35 +170,45 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   std::vector<std::size_t> every(nt);
   for(std::size_t t = 0; t < nt; ++t) every[t] = t;
   collect(0, n, every);
-  // cuts flattened chart c across the middle of its long side (a short seam), each half grown
-  // again alone; false if it cannot be cut
-  auto cut_across = [&](std::size_t c, const std::vector<double>& along) {
+  // grows chart c again as `parts` charts, the parts `part` gives its triangles (the part of a
+  // polygon is that of its first triangle: a polygon's triangles stay together); false if one
+  // part would hold them all
+  auto split = [&](std::size_t c, const std::vector<int>& part, int parts) {
     const std::vector<std::size_t> triangles = charts[c].triangles;
-    const double middle = area_median(along, charts[c].flat);
-    std::unordered_map<std::size_t, std::size_t> polygon_first; // a polygon's triangles stay together
+    std::unordered_map<std::size_t, std::size_t> polygon_first;
     for(std::size_t i = 0; i < triangles.size(); ++i)
       polygon_first.emplace(m.polygon[triangles[i]], i);
-    std::array<std::vector<char>, 2> half{std::vector<char>(nt, 0), std::vector<char>(nt, 0)};
-    std::size_t in_first = 0;
+    std::vector<std::vector<char> > in(std::size_t(parts), std::vector<char>(nt, 0));
+    std::vector<std::size_t> size(std::size_t(parts), 0);
     for(std::size_t i = 0; i < triangles.size(); ++i) {
-      const bool first_half = along[polygon_first[m.polygon[triangles[i]]]] < middle;
-      half[first_half ? 0 : 1][triangles[i]] = 1;
-      in_first += first_half;
+      const std::size_t j = std::size_t(part[polygon_first[m.polygon[triangles[i]]]]);
+      in[j][triangles[i]] = 1;
+      ++size[j];
     }
-    if(in_first == 0 || in_first == triangles.size())
+    if(std::find(size.begin(), size.end(), triangles.size()) != size.end())
       return false;
     const int first = int(charts.size());
-    const int made_first = g.grow(half[0], first, angle[c], 0);
-    const int made = made_first + g.grow(half[1], first + made_first, angle[c], 0);
+    int made = 0;
+    for(std::size_t j = 0; j < in.size(); ++j)
+      if(size[j] > 0)
+        made += g.grow(in[j], first + made, angle[c], 0);
     collect(first, made, triangles);
     charts.resize(std::size_t(first + made));
     angle.resize(std::size_t(first + made), angle[c]);
     charts[c] = Chart_map();
     return true;
   };
-  // a flattened chart c above the bound is cut in two across its length; one that could not
-  // be flattened is grown again with a narrower cone, or, if it is one polygon, split into
-  // its triangles laid out alone
+  // cuts flattened chart c across the middle of its long side (a short seam)
+  auto cut_across = [&](std::size_t c, const std::vector<double>& along) {
+    const double middle = area_median(along, charts[c].flat);
+    std::vector<int> half(along.size());
+    for(std::size_t i = 0; i < along.size(); ++i)
+      half[i] = along[i] < middle ? 0 : 1;
+    return split(c, half, 2);
+  };
+  // a flattened chart c above the bound is cut in two across its length, or, far above it,
+  // into several compact parts at once; one that could not be flattened is grown again with a
+  // narrower cone, or, if it is one polygon, split into its triangles laid out alone
   std::vector<Chart_areas> areas; // per chart, measured once it is flattened
   auto cut_if_needed = [&](std::size_t c) {
     if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
@@ -218,6 +230,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       return;
     }
     const auto t1 = std::chrono::steady_clock::now();
+    const int parts = charts[c].ok ? number_of_parts(charts[c].l2, settings.max_stretch) : 0;
+    if(parts > 2 && split(c, partition_chart(charts[c], parts), parts)) {
+      r.seconds_cutting += seconds_since(t1);
+      return;
+    }
     if(charts[c].ok) {
       const Chart_areas& a = areas[c];
       std::vector<double> along;

@@ -1,0 +1,94 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_ATLAS_CHART_PARTITION_H
+#define CGAL_SMP_INTERNAL_ATLAS_CHART_PARTITION_H
+
+// A flattened chart far above the stretch bound cut into several compact parts at once, rather
+// than halved again and again (each halving flattens all its triangles once more).
+
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
+
+// How many parts a chart of normalized L2 stretch `l2` is cut into so that its parts may meet
+// `bound`: the area distortion that a curved patch forces grows with its area, and the stretch
+// in excess of 1 about as its square, so k parts of a k-th of the area each have about a k^2-th
+// of the excess. Rounded down (a part still above the bound is cut again; one part too many is
+// a seam too many), at most 16; 2 means: halve it.
+inline int number_of_parts(double l2, double bound)
+{
+  const double excess = l2 - 1., allowed = bound - 1.;
+  if(!(excess > 0.) || !(allowed > 0.) || !std::isfinite(excess))
+    return 2;
+  return (std::max)(2, (std::min)(16, int(std::floor(std::sqrt(excess / allowed)))));
+}
+
+// A part (0 to `parts` - 1) for each triangle of the flattened `chart`: Lloyd's iterations
+// (k-means) on the triangles' uv centroids weighted by their surface area, from seeds spread by
+// farthest-point sampling, so that the parts are compact (short seams between them).
+inline std::vector<int> partition_chart(const Chart_map& chart, int parts)
+{
+  const std::size_t n = chart.flat.tri.size(), k = std::size_t((std::max)(parts, 1));
+  std::vector<Vec2> centroid(n);
+  std::vector<double> weight(n);
+  for(std::size_t i = 0; i < n; ++i) {
+    const Triangle& t = chart.flat.tri[i];
+    const Vec2 &a = chart.uv[std::size_t(t[0])], &b = chart.uv[std::size_t(t[1])], &c = chart.uv[std::size_t(t[2])];
+    centroid[i] = {(a[0] + b[0] + c[0]) / 3., (a[1] + b[1] + c[1]) / 3.};
+    weight[i] = triangle_area(chart.flat.xyz[std::size_t(t[0])], chart.flat.xyz[std::size_t(t[1])],
+                              chart.flat.xyz[std::size_t(t[2])]);
+  }
+  auto squared_distance = [](const Vec2& p, const Vec2& q) {
+    return (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]);
+  };
+  std::vector<int> label(n, 0);
+  if(n == 0)
+    return label;
+  std::vector<Vec2> center{centroid[0]};
+  std::vector<double> nearest(n, HUGE_VAL);
+  while(center.size() < k) {
+    std::size_t farthest = 0;
+    for(std::size_t i = 0; i < n; ++i) {
+      nearest[i] = (std::min)(nearest[i], squared_distance(centroid[i], center.back()));
+      if(nearest[i] > nearest[farthest]) farthest = i;
+    }
+    center.push_back(centroid[farthest]);
+  }
+  // a few iterations place the centers; the labels need not be a converged k-means
+  for(int iteration = 0; iteration < 10; ++iteration) {
+    for(std::size_t i = 0; i < n; ++i) {
+      double best = HUGE_VAL;
+      for(std::size_t j = 0; j < k; ++j) {
+        const double d = squared_distance(centroid[i], center[j]);
+        if(d < best) { best = d; label[i] = int(j); }
+      }
+    }
+    std::vector<Vec2> sum(k, Vec2{0., 0.});
+    std::vector<double> total(k, 0.);
+    for(std::size_t i = 0; i < n; ++i) {
+      const std::size_t j = std::size_t(label[i]);
+      sum[j] = {sum[j][0] + weight[i] * centroid[i][0], sum[j][1] + weight[i] * centroid[i][1]};
+      total[j] += weight[i];
+    }
+    for(std::size_t j = 0; j < k; ++j)
+      if(total[j] > 0.) center[j] = {sum[j][0] / total[j], sum[j][1] / total[j]};
+  }
+  return label;
+}
+
+CGAL_SMP_END_SOLVER_NAMESPACE
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_ATLAS_CHART_PARTITION_H
