@@ -471,6 +471,45 @@ void chart_of_two_pieces()
             << a.report.flipped_faces << " flipped");
 }
 
+// A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
+// `turn` of its circumference (a whole turn: an open tube, no disk).
+SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
+{
+  SMP::internal::Chart_map chart;
+  const bool closed = turn >= 1.;
+  const int ring = closed ? columns : columns + 1;
+  for(int j = 0; j <= rows; ++j)
+    for(int i = 0; i < ring; ++i) {
+      const double a = 2. * 3.14159265358979323846 * turn * i / columns;
+      chart.flat.xyz.push_back({std::cos(a), std::sin(a), 0.1 * j});
+    }
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < columns; ++i) {
+      const int a = j * ring + i, b = j * ring + (i + 1) % ring, c = a + ring, d = b + ring;
+      chart.flat.tri.push_back({a, b, d});
+      chart.flat.tri.push_back({a, d, c});
+    }
+  for(std::size_t t = 0; t < chart.flat.tri.size(); ++t)
+    chart.triangles.push_back(t);
+  return chart;
+}
+
+// A developable chart is flattened without stretch, to rounding (LSCM's map of it is an
+// isometry, which the stretch-minimizing iteration from a circle only nears: 1e-8 to 1e-6 here);
+// a tube, which is no disk, still gets a flip-free map, from the other start.
+void chart_starts()
+{
+  SMP::internal::Chart_parameterization_settings settings;
+  settings.max_stretch = 1.05;
+  // a strip of 60 by 3 squares bent around most of the cylinder
+  SMP::internal::Chart_map strip = cylinder_chart(60, 3, 60 * 0.1 / (2. * 3.14159265358979323846));
+  SMP::internal::flatten_chart(strip, settings);
+  SMP_CHECK(strip.ok && std::abs(strip.l2 - 1.) < 1e-12, "developable strip: ok " << strip.ok << ", L2 " << strip.l2);
+  SMP::internal::Chart_map tube = cylinder_chart(24, 6, 1.);
+  SMP::internal::flatten_chart(tube, settings);
+  SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
+}
+
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
 // two corners) has no triangle to chart; its polygons are still in a chart that exists.
 void only_flat_polygons()
@@ -585,6 +624,7 @@ int main(int argc, char** argv)
   bad_input();
   packing_search();
   chart_of_two_pieces();
+  chart_starts();
   only_flat_polygons();
   scaled_soups();
   progress();

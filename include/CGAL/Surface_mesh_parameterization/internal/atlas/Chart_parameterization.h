@@ -4,24 +4,29 @@
 #ifndef CGAL_SMP_INTERNAL_ATLAS_CHART_PARAMETERIZATION_H
 #define CGAL_SMP_INTERNAL_ATLAS_CHART_PARAMETERIZATION_H
 
-// One chart of the atlas flattened by this package's parameterizer: the chart's triangles made
-// into a Surface_mesh (one vertex per chart vertex), the stretch-minimizing iteration from a
-// fixed square border, then the polish with a free border (flip-free, the border never
-// crossing itself). A chart of one triangle is laid out isometrically.
+// One chart of the atlas flattened: the chart's triangles made into a Surface_mesh (one vertex
+// per chart vertex), then Sander's stretch lowered with a free border (flip-free, the border
+// never crossing itself) from one of two starts: CGAL's LSCM where its map is a bijection (it
+// is cheap, and often much closer to the least stretch), else this package's stretch-minimizing
+// iteration from a fixed circular border. A chart of one triangle is laid out isometrically.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flip_free_step.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 
 #include <Eigen/SparseLU>
 
@@ -50,6 +55,7 @@ struct Chart_map
 struct Chart_parameterization_settings
 {
   unsigned int polish_iterations = 10;   // free-border Newton steps
+  double max_stretch = HUGE_VAL;         // a map from LSCM at most this stretched is kept as it is
 };
 
 // Numbers the chart vertices of `triangles` and fills `chart.flat`.
@@ -100,62 +106,112 @@ inline void layout_single_triangle(Chart_map& chart)
     chart.uv[std::size_t(t[k])] = corner[std::size_t(k)];
 }
 
-// Flattens the chart, whose vertices are made (`make_chart_vertices()`). On failure `chart.ok`
-// is false and the caller splits the chart. Charts can be flattened on several threads at once.
-inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings)
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Chart_kernel;
+typedef CGAL::Surface_mesh<Chart_kernel::Point_3> Chart_mesh;
+typedef boost::graph_traits<Chart_mesh>::vertex_descriptor Chart_vertex;
+typedef boost::graph_traits<Chart_mesh>::halfedge_descriptor Chart_halfedge;
+
+// The uv of every vertex of `sm` (vertex i of the chart is vertex i of `sm`).
+template <typename UVMap>
+std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
+{
+  std::vector<Vec2> uv;
+  uv.reserve(num_vertices(sm));
+  for(Chart_vertex v : vertices(sm)) {
+    const Chart_kernel::Point_2& q = get(uvmap, v);
+    uv.push_back({q.x(), q.y()});
+  }
+  return uv;
+}
+
+// LSCM's map of the chart polished by free-border Newton steps, if the chart is a disk and
+// LSCM's map of it is a bijection (every face of positive area, the border loop simple: then
+// no two triangles overlap, and the polish keeps it so); false otherwise.
+inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Flat_triangles& flat,
+                                   unsigned int newton_steps, std::vector<Vec2>& uv)
+{
+  std::vector<Chart_halfedge> loops;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
+  const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
+  if(loops.size() != 1 || euler != 1)
+    return false;
+  auto uvmap = sm.add_property_map<Chart_vertex, Chart_kernel::Point_2>("v:conformal_uv").first;
+  auto vimap = sm.add_property_map<Chart_vertex, int>("v:conformal_index").first;
+  auto vpmap = sm.add_property_map<Chart_vertex, bool>("v:conformal_done", false).first;
+  for(Chart_vertex v : vertices(sm))
+    put(vimap, v, int(v));
+  LSCM_parameterizer_3<Chart_mesh> lscm;
+  const bool solved = lscm.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
+  uv = read_uv(sm, uvmap);
+  sm.remove_property_map(uvmap);
+  sm.remove_property_map(vimap);
+  sm.remove_property_map(vpmap);
+  if(!solved)
+    return false;
+  double total = 0.;
+  for(const Triangle& t : flat.tri)
+    total += twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]);
+  for(const Triangle& t : flat.tri)
+    if(!(total * twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]) > 0.))
+      return false;
+  std::vector<int> border;
+  for(Chart_halfedge h : halfedges_around_face(bhd, sm))
+    border.push_back(int(target(h, sm)));
+  if(!Simple_loop_check()(uv, border))
+    return false;
+  if(newton_steps == 0)
+    return true;
+  Sander_polish_settings ps;
+  ps.direction = Sander_polish_direction::NEWTON;
+  ps.free_border = true;
+  ps.threads = 1;
+  ps.max_iterations = newton_steps;
+  Sander_energy_polisher<> polisher;
+  return polisher.polish(flat, std::vector<Triangle>(), std::vector<char>(uv.size(), 0), border, uv, ps).status ==
+         Sander_polish_status::OK;
+}
+
+// The stretch-minimizing parameterizer (LOWEST_STRETCH from a circular border, then the polish
+// with a free border); false if it fails or flattens only part of the chart.
+inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd, unsigned int polish_iterations,
+                                            std::vector<Vec2>& uv)
+{
+  auto uvmap = sm.add_property_map<Chart_vertex, Chart_kernel::Point_2>("v:uv").first;
+  auto vimap = sm.add_property_map<Chart_vertex, int>("v:index").first;
+  auto vpmap = sm.add_property_map<Chart_vertex, bool>("v:done", false).first;
+  for(Chart_vertex v : vertices(sm))
+    put(vimap, v, int(v));
+  namespace P = parameters;
+  // Eigen's LU: charts are small, and flattened on several threads at once, where
+  // SuiteSparse's solvers (through a multithreaded BLAS) made results vary from run to run
+  typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Solver;
+  // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
+  // border) would make a flat triangle on a side of a square
+  typedef Shape_preserving_parameterizer_3<Chart_mesh, Circular_border_arc_length_parameterizer_3<Chart_mesh>, Solver> Initial;
+  Stretch_minimizing_parameterizer_3<Chart_mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
+      .polish_iterations(polish_iterations).free_border(true).number_of_threads(1u));
+  bool ok = p.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
+  // only the piece of `bhd` is flattened: a chart of pieces that touch at a repeated
+  // position only (not at a chart vertex) is split like a failed one
+  for(Chart_vertex v : vertices(sm))
+    ok = ok && get(vpmap, v);
+  if(ok)
+    uv = read_uv(sm, uvmap);
+  sm.remove_property_map(uvmap);
+  sm.remove_property_map(vimap);
+  sm.remove_property_map(vpmap);
+  return ok;
+}
+
+// Measures `chart.uv` (turned to the input's orientation): `chart.ok` if it is finite, with no
+// flipped face nor face of zero uv area; `chart.l2` its normalized L2 stretch.
+inline void measure_chart(Chart_map& chart)
 {
   chart.ok = false;
-  if(chart.triangles.size() == 1) {
-    layout_single_triangle(chart);
-  } else {
-    typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-    typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-    typedef boost::graph_traits<Mesh>::vertex_descriptor vertex_descriptor;
-    typedef boost::graph_traits<Mesh>::halfedge_descriptor halfedge_descriptor;
-    Mesh sm;
-    std::vector<vertex_descriptor> vd;
-    vd.reserve(chart.flat.xyz.size());
-    for(const Vec3& p : chart.flat.xyz)
-      vd.push_back(sm.add_vertex(K::Point_3(p[0], p[1], p[2])));
-    for(const Triangle& t : chart.flat.tri)
-      if(sm.add_face(vd[std::size_t(t[0])], vd[std::size_t(t[1])], vd[std::size_t(t[2])]) == Mesh::null_face())
-        return;
-    const halfedge_descriptor bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
-    if(bhd == boost::graph_traits<Mesh>::null_halfedge())
-      return;
-    auto uvmap = sm.add_property_map<vertex_descriptor, K::Point_2>("v:uv").first;
-    auto vimap = sm.add_property_map<vertex_descriptor, int>("v:index").first;
-    auto vpmap = sm.add_property_map<vertex_descriptor, bool>("v:done", false).first;
-    for(vertex_descriptor v : vertices(sm))
-      put(vimap, v, int(v));
-    namespace P = parameters;
-    // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
-    // border) would make a flat triangle on a side of a square
-    // Eigen's LU: charts are small, and flattened on several threads at once, where
-    // SuiteSparse's solvers (through a multithreaded BLAS) made results vary from run to run
-    typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Solver;
-    typedef Shape_preserving_parameterizer_3<Mesh, Circular_border_arc_length_parameterizer_3<Mesh>, Solver> Initial;
-    Stretch_minimizing_parameterizer_3<Mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
-        .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u));
-    if(p.parameterize(sm, bhd, uvmap, vimap, vpmap) != OK)
-      return;
-    // only the piece of `bhd` is flattened: a chart of pieces that touch at a repeated
-    // position only (not at a chart vertex) is split like a failed one
-    for(vertex_descriptor v : vd)
-      if(!get(vpmap, v))
-        return;
-    chart.uv.resize(vd.size());
-    for(std::size_t i = 0; i < vd.size(); ++i) {
-      const K::Point_2& q = get(uvmap, vd[i]);
-      chart.uv[i] = {q.x(), q.y()};
-    }
-  }
-  // the input's orientation
+  chart.l2 = HUGE_VAL;
   double signed_area = 0.;
-  for(const Triangle& t : chart.flat.tri) {
-    const Vec2 &a = chart.uv[std::size_t(t[0])], &b = chart.uv[std::size_t(t[1])], &c = chart.uv[std::size_t(t[2])];
-    signed_area += twice_signed_area(a, b, c);
-  }
+  for(const Triangle& t : chart.flat.tri)
+    signed_area += twice_signed_area(chart.uv[std::size_t(t[0])], chart.uv[std::size_t(t[1])], chart.uv[std::size_t(t[2])]);
   if(signed_area < 0.)
     for(Vec2& q : chart.uv)
       q[0] = -q[0];
@@ -167,6 +223,50 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   chart.ok = std::isfinite(chart.l2);
   for(const Vec2& q : chart.uv) // a chart is packed only with finite uv
     chart.ok = chart.ok && std::isfinite(q[0]) && std::isfinite(q[1]);
+}
+
+// Flattens the chart, whose vertices are made (`make_chart_vertices()`): from LSCM's map if it
+// is a bijection and ends at most `max_stretch`, else the lower of the two maps. On failure
+// `chart.ok` is false and the caller splits the chart. Charts can be flattened on several
+// threads at once.
+inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings)
+{
+  chart.ok = false;
+  if(chart.triangles.size() == 1) {
+    layout_single_triangle(chart);
+    measure_chart(chart);
+    return;
+  }
+  Chart_mesh sm;
+  std::vector<Chart_vertex> vd;
+  vd.reserve(chart.flat.xyz.size());
+  for(const Vec3& p : chart.flat.xyz)
+    vd.push_back(sm.add_vertex(Chart_kernel::Point_3(p[0], p[1], p[2])));
+  for(const Triangle& t : chart.flat.tri)
+    if(sm.add_face(vd[std::size_t(t[0])], vd[std::size_t(t[1])], vd[std::size_t(t[2])]) == Chart_mesh::null_face())
+      return;
+  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  if(bhd == boost::graph_traits<Chart_mesh>::null_halfedge())
+    return;
+  Chart_map conformal; // LSCM's map, kept if it is above the bound but below the other one
+  if(flatten_from_conformal(sm, bhd, chart.flat, settings.polish_iterations, chart.uv)) {
+    measure_chart(chart);
+    if(chart.ok && chart.l2 <= settings.max_stretch)
+      return;
+    if(chart.ok) {
+      conformal.uv.swap(chart.uv);
+      conformal.l2 = chart.l2;
+    }
+  }
+  chart.ok = false;
+  chart.l2 = HUGE_VAL;
+  if(flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv))
+    measure_chart(chart);
+  if(std::isfinite(conformal.l2) && !(chart.ok && chart.l2 <= conformal.l2)) {
+    chart.uv.swap(conformal.uv);
+    chart.l2 = conformal.l2;
+    chart.ok = true;
+  }
 }
 
 CGAL_SMP_END_SOLVER_NAMESPACE

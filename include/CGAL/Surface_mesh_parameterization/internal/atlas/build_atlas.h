@@ -89,6 +89,7 @@ Atlas_settings read_atlas_settings(const NamedParameters& np)
   s.packing.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.packing.resolution);
   s.packing.gutter = choose_parameter(get_parameter(np, internal_np::gutter), s.packing.gutter);
   s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
+  s.chart.max_stretch = s.max_stretch;
   s.visitor = make_atlas_visitor(get_parameter(np, CGAL::internal_np::visitor));
   return s;
 }
