@@ -510,6 +510,19 @@ void chart_starts()
   SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
 }
 
+// The atlas does not depend on the number of threads (charts are flattened, and rasterized
+// for the packing, on several at once).
+void thread_independence()
+{
+  for(const char* name : {"pig.off", "three_peaks.off"}) {
+    const Soup s = read(name);
+    const SMP::Atlas one = SMP::make_atlas(s.points, s.polygons, SMP::parameters::number_of_threads(1u));
+    const SMP::Atlas three = SMP::make_atlas(s.points, s.polygons, SMP::parameters::number_of_threads(3u));
+    SMP_CHECK(one.uv == three.uv && one.chart == three.chart && one.report.charts == three.report.charts,
+              name << ": the atlas on 3 threads differs from the one on 1");
+  }
+}
+
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
 // two corners) has no triangle to chart; its polygons are still in a chart that exists.
 void only_flat_polygons()
@@ -625,6 +638,7 @@ int main(int argc, char** argv)
   packing_search();
   chart_of_two_pieces();
   chart_starts();
+  thread_independence();
   only_flat_polygons();
   scaled_soups();
   progress();

@@ -12,9 +12,11 @@
 // charts given in texels of a square texture.
 // Charts only ever occupy disjoint cells, each widened by half the gutter, so no two overlap.
 // (One header, a little longer than most: the rasterization, the placement and the scale search
-// share the packing's grid.)
+// share the packing's grid.) The charts are rasterized on several threads; the layout does not
+// depend on their number.
 
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
@@ -40,6 +42,7 @@ struct Packing_settings
   unsigned int coarse_resolution = 256; // of the layouts that only estimate the utilization
   double goal = 0.52;             // utilization below which the longest chart is cut across
   int max_cut_rounds = 16;        // times one may be
+  unsigned int threads = 0;       // rasterizing the charts (0: one per core)
 };
 
 struct Packing_result
@@ -372,7 +375,8 @@ struct Packing_layout
 };
 
 inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
-                                     const std::vector<double>& area_uv, const std::vector<double>& area_3d)
+                                     const std::vector<double>& area_uv, const std::vector<double>& area_3d,
+                                     unsigned int threads = 1)
 {
   Packing_input in;
   const std::size_t n = uv.size();
@@ -381,7 +385,8 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
   if(!(in.total_3d > 0.)) in.total_3d = 1.;
   in.area.resize(n);
   in.turned_uv.resize(n);
-  for(std::size_t c = 0; c < n; ++c) {
+  std::vector<double> length(n);
+  parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
     // a chart without surface area gets the size of a small one
     double s = area_uv[c] > 0. && area_3d[c] > 0. ? std::sqrt(area_3d[c] / area_uv[c]) : 0.;
     Vec2 extent = align_chart(uv[c]);
@@ -391,10 +396,13 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
     }
     for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
     extent = {s * extent[0], s * extent[1]};
-    in.longest = (std::max)(in.longest, extent[0]);
+    length[c] = extent[0];
     for(int k = 0; k < 4; ++k)
       in.turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
     in.area[c] = s * s * area_uv[c];
+  });
+  for(std::size_t c = 0; c < n; ++c) { // in order: the sums do not depend on the threads
+    in.longest = (std::max)(in.longest, length[c]);
     in.charts_area += in.area[c];
   }
   return in;
@@ -402,15 +410,17 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
 
 // The layout at the largest scale found (in at most `tries` packings, from `scale` on) whose
 // square fits `cells` cells, each chart widened by `pad` cells; false if none fits.
-inline bool search_layout(const Packing_input& in, long cells, long pad, double scale, int tries, Packing_layout& best)
+inline bool search_layout(const Packing_input& in, long cells, long pad, double scale, int tries, Packing_layout& best,
+                          unsigned int threads = 1)
 {
   const std::size_t n = in.area.size();
   Packing_layout trial;
   const auto pack = [&](double at) { // the side of the square at scale `at`, -1 beyond the texture
     std::vector<std::array<Chart_mask, 4> > masks(n);
-    for(std::size_t c = 0; c < n; ++c)
+    parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
       for(std::size_t k = 0; k < 4; ++k)
         masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], at, pad);
+    });
     trial.side = place_charts(masks, in.area, cells, trial.x, trial.y, trial.turn);
     trial.scale = at;
     if(trial.side > 0 && at > best.scale)
@@ -450,7 +460,7 @@ inline Packing_result estimate_packing(const Packing_input& in, const Packing_se
   const long pad = std::lround(0.5 * settings.gutter * ratio);
   const double start = scale_hint > 0. ? scale_hint * ratio : double(coarse) * std::sqrt(0.6 / in.total_3d);
   Packing_layout layout;
-  if(!search_layout(in, coarse, pad, start, 10, layout)) return r;
+  if(!search_layout(in, coarse, pad, start, 10, layout, settings.threads)) return r;
   r.scale = layout.scale / ratio * double(coarse) / double(layout.side);
   r.utilization = in.charts_area * layout.scale * layout.scale / (double(layout.side) * double(layout.side));
   r.side = double(layout.side) / layout.scale;
@@ -468,13 +478,13 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   Packing_result r;
   const std::size_t n = uv.size();
   if(n == 0) return r;
-  const Packing_input in = prepare_packing(uv, tri, area_uv, area_3d);
+  const Packing_input in = prepare_packing(uv, tri, area_uv, area_3d, settings.threads);
   const long cells = long((std::max)(settings.resolution, 16u));
   const long pad = long(std::ceil(0.5 * settings.gutter));
   const Packing_result coarse = estimate_packing(in, settings, scale_hint);
   const double start = coarse.scale > 0. ? coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
   Packing_layout best;
-  if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, best)) {
+  if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, best, settings.threads)) {
     // could not fit at any tried scale: one chart per row of a larger square
     best.scale = start;
     best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0);

@@ -86,6 +86,7 @@ Atlas_settings read_atlas_settings(const NamedParameters& np)
   Atlas_settings s;
   s.max_stretch = choose_parameter(get_parameter(np, internal_np::max_stretch), s.max_stretch);
   s.threads = choose_parameter(get_parameter(np, internal_np::number_of_threads), s.threads);
+  s.packing.threads = s.threads;
   s.packing.resolution = choose_parameter(get_parameter(np, internal_np::resolution), s.packing.resolution);
   s.packing.gutter = choose_parameter(get_parameter(np, internal_np::gutter), s.packing.gutter);
   s.chart.polish_iterations = choose_parameter(get_parameter(np, internal_np::polish_iterations), s.chart.polish_iterations);
@@ -322,7 +323,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       break;
     std::vector<std::vector<Vec2> > turned = uv;
     const Packing_result estimate =
-      estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d), settings.packing, scale_hint);
+      estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d, settings.packing.threads), settings.packing, scale_hint);
     scale_hint = estimate.scale;
     if(estimate.utilization >= settings.packing.goal)
       break;
