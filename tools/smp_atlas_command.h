@@ -51,11 +51,10 @@ int run_atlas(const Options& o)
   const std::string name = fs::path(o.input).stem().string();
   std::vector<std::string> outputs;
   {
-    std::ostringstream obj;
-    obj.precision(17);
+    smp_tools::Text obj;
     obj << "# " << name << ": texture atlas by smp-parameterize --atlas (" << r.charts << " charts)\nmtllib " << name << ".mtl\n";
     for(const Point_3& p : points)
-      obj << "v " << p << "\n";
+      obj << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
     for(const auto& polygon : atlas.uv)
       for(const auto& q : polygon)
         obj << "vt " << q[0] << " " << q[1] << "\n";

@@ -490,11 +490,10 @@ int run(int argc, char** argv)
   const std::string name = fs::path(o.input).stem().string();
   std::vector<std::string> outputs;
   {
-    std::ostringstream obj;
+    smp_tools::Text obj;
     obj << "# " << name << " parameterized by smp-parameterize (" << o.method << ")\nmtllib " << name << ".mtl\n";
-    obj.precision(17);
     for(vertex_descriptor v : vertices(mesh))
-      obj << "v " << mesh.point(v) << "\n";
+      obj << "v " << mesh.point(v).x() << ' ' << mesh.point(v).y() << ' ' << mesh.point(v).z() << '\n';
     for(vertex_descriptor v : vertices(mesh))
       obj << "vt " << uv[v].x() << " " << uv[v].y() << "\n";
     obj << "usemtl checker\n";
