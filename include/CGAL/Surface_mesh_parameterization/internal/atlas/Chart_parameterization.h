@@ -248,23 +248,25 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
   if(bhd == boost::graph_traits<Chart_mesh>::null_halfedge())
     return;
-  Chart_map conformal; // LSCM's map, kept if it is above the bound but below the other one
+  // LSCM's map, kept if it is above the bound but below the other one
+  std::vector<Vec2> conformal_uv;
+  double conformal_l2 = HUGE_VAL;
   if(flatten_from_conformal(sm, bhd, chart.flat, settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
     if(chart.ok && chart.l2 <= settings.max_stretch)
       return;
     if(chart.ok) {
-      conformal.uv.swap(chart.uv);
-      conformal.l2 = chart.l2;
+      conformal_uv.swap(chart.uv);
+      conformal_l2 = chart.l2;
     }
   }
   chart.ok = false;
   chart.l2 = HUGE_VAL;
   if(flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv))
     measure_chart(chart);
-  if(std::isfinite(conformal.l2) && !(chart.ok && chart.l2 <= conformal.l2)) {
-    chart.uv.swap(conformal.uv);
-    chart.l2 = conformal.l2;
+  if(std::isfinite(conformal_l2) && !(chart.ok && chart.l2 <= conformal_l2)) {
+    chart.uv.swap(conformal_uv);
+    chart.l2 = conformal_l2;
     chart.ok = true;
   }
 }
