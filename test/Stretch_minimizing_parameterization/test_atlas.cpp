@@ -510,6 +510,19 @@ void chart_starts()
   SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
 }
 
+// The number of parts a chart far above the bound is cut into, including a bound so close to 1
+// that the ratio of the excesses overflows (found by the fuzz harness: it was converted to int).
+void parts_count()
+{
+  namespace I = SMP::internal;
+  SMP_CHECK(I::number_of_parts(1.5, 1.05) == 3, I::number_of_parts(1.5, 1.05));
+  SMP_CHECK(I::number_of_parts(1.04, 1.05) == 2, I::number_of_parts(1.04, 1.05));
+  SMP_CHECK(I::number_of_parts(100., 1.05) == 16, I::number_of_parts(100., 1.05));
+  SMP_CHECK(I::number_of_parts(2., 1. + 1e-300) == 2, I::number_of_parts(2., 1. + 1e-300)); // the bound rounds to 1
+  SMP_CHECK(I::number_of_parts(1e300, 1. + 2.2e-16) == 16, I::number_of_parts(1e300, 1. + 2.2e-16));
+  SMP_CHECK(I::number_of_parts(HUGE_VAL, 1.05) == 2, I::number_of_parts(HUGE_VAL, 1.05));
+}
+
 // The atlas does not depend on the number of threads (charts are flattened, and rasterized
 // for the packing, on several at once).
 void thread_independence()
@@ -639,6 +652,7 @@ int main(int argc, char** argv)
   chart_of_two_pieces();
   chart_starts();
   thread_independence();
+  parts_count();
   only_flat_polygons();
   scaled_soups();
   progress();

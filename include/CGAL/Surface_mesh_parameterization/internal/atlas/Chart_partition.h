@@ -30,7 +30,8 @@ inline int number_of_parts(double l2, double bound)
   const double excess = l2 - 1., allowed = bound - 1.;
   if(!(excess > 0.) || !(allowed > 0.) || !std::isfinite(excess))
     return 2;
-  return (std::max)(2, (std::min)(16, int(std::floor(std::sqrt(excess / allowed)))));
+  const double k = std::floor(std::sqrt(excess / allowed)); // +inf for a bound of 1 + a denormal
+  return k >= 16. ? 16 : (std::max)(2, int(k));
 }
 
 // A part (0 to `parts` - 1) for each triangle of the flattened `chart`: Lloyd's iterations
