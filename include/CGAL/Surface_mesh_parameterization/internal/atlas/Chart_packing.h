@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
 #include <CGAL/min_quadrilateral_2.h>
@@ -57,16 +58,24 @@ struct Packing_result
 inline Vec2 align_chart(std::vector<Vec2>& uv)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  std::vector<K::Point_2> points, hull, rectangle;
+  std::vector<K::Point_2> points, hull;
   points.reserve(uv.size());
   for(const Vec2& q : uv)
     points.emplace_back(q[0], q[1]);
   CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
   double c = 1., s = 0.;
   if(hull.size() >= 3) {
-    CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(rectangle));
+    // exact constructions: the rectangle's corners are intersections of lines that rounding
+    // can make parallel on a thin hull (CGAL then fails an assertion)
+    typedef CGAL::Exact_predicates_exact_constructions_kernel E;
+    std::vector<E::Point_2> exact_hull, rectangle;
+    exact_hull.reserve(hull.size());
+    for(const K::Point_2& p : hull)
+      exact_hull.emplace_back(p.x(), p.y());
+    CGAL::min_rectangle_2(exact_hull.begin(), exact_hull.end(), std::back_inserter(rectangle));
     if(rectangle.size() == 4) {
-      const double dx = rectangle[1].x() - rectangle[0].x(), dy = rectangle[1].y() - rectangle[0].y();
+      const double dx = CGAL::to_double(rectangle[1].x() - rectangle[0].x()),
+                   dy = CGAL::to_double(rectangle[1].y() - rectangle[0].y());
       const double l = std::hypot(dx, dy);
       if(l > 0.) { c = dx / l; s = dy / l; }
     }
