@@ -18,9 +18,9 @@
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/convex_hull_2.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/min_quadrilateral_2.h>
 
 #include <algorithm>
@@ -65,19 +65,19 @@ inline Vec2 align_chart(std::vector<Vec2>& uv)
   CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
   double c = 1., s = 0.;
   if(hull.size() >= 3) {
-    // exact constructions: the rectangle's corners are intersections of lines that rounding
-    // can make parallel on a thin hull (CGAL then fails an assertion)
-    typedef CGAL::Exact_predicates_exact_constructions_kernel E;
-    std::vector<E::Point_2> exact_hull, rectangle;
-    exact_hull.reserve(hull.size());
-    for(const K::Point_2& p : hull)
-      exact_hull.emplace_back(p.x(), p.y());
-    CGAL::min_rectangle_2(exact_hull.begin(), exact_hull.end(), std::back_inserter(rectangle));
+    // On a hull of extreme proportions (a corner 1e121 away from the others), CGAL's
+    // min_rectangle_2 fails an assertion (with exact constructions too) or, without
+    // assertions, may give corners far off: any turn is a valid one, so such a chart keeps its own.
+    std::vector<K::Point_2> rectangle;
+    try {
+      CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(rectangle));
+    } catch(const CGAL::Failure_exception&) {
+      rectangle.clear();
+    }
     if(rectangle.size() == 4) {
-      const double dx = CGAL::to_double(rectangle[1].x() - rectangle[0].x()),
-                   dy = CGAL::to_double(rectangle[1].y() - rectangle[0].y());
+      const double dx = rectangle[1].x() - rectangle[0].x(), dy = rectangle[1].y() - rectangle[0].y();
       const double l = std::hypot(dx, dy);
-      if(l > 0.) { c = dx / l; s = dy / l; }
+      if(l > 0. && std::isfinite(l)) { c = dx / l; s = dy / l; }
     }
   }
   double xmin = HUGE_VAL, ymin = HUGE_VAL, xmax = -HUGE_VAL, ymax = -HUGE_VAL;
