@@ -30,7 +30,7 @@ inline int number_of_parts(double l2, double bound)
   const double excess = l2 - 1., allowed = bound - 1.;
   if(!(excess > 0.) || !(allowed > 0.) || !std::isfinite(excess))
     return 2;
-  const double k = std::floor(std::sqrt(excess / allowed)); // +inf for a bound of 1 + a denormal
+  const double k = std::floor(std::sqrt(excess / allowed)); // beyond int (even +inf) near a bound of 1
   return k >= 16. ? 16 : (std::max)(2, int(k));
 }
 
