@@ -65,9 +65,9 @@ inline Vec2 align_chart(std::vector<Vec2>& uv)
   CGAL::convex_hull_2(points.begin(), points.end(), std::back_inserter(hull));
   double c = 1., s = 0.;
   if(hull.size() >= 3) {
-    // On a hull of extreme proportions (a corner 1e121 away from the others), CGAL's
-    // min_rectangle_2 fails an assertion (with exact constructions too) or, without
-    // assertions, may give corners far off: any turn is a valid one, so such a chart keeps its own.
+    // On a hull of extreme proportions, CGAL's min_rectangle_2 fails an assertion (with exact
+    // constructions too) or, without assertions, may give corners far off: any turn is a valid
+    // one, so such a chart keeps its own.
     std::vector<K::Point_2> rectangle;
     try {
       CGAL::min_rectangle_2(hull.begin(), hull.end(), std::back_inserter(rectangle));

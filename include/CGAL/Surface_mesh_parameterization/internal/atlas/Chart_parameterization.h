@@ -17,7 +17,6 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
-#include <CGAL/Surface_mesh_parameterization/internal/flip_free_step.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -148,19 +147,10 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   sm.remove_property_map(vpmap);
   if(!solved)
     return false;
-  double total = 0.;
-  for(const Triangle& t : flat.tri)
-    total += twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]);
-  for(const Triangle& t : flat.tri)
-    if(!(total * twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]) > 0.))
-      return false;
   std::vector<int> border;
   for(Chart_halfedge h : halfedges_around_face(bhd, sm))
     border.push_back(int(target(h, sm)));
-  if(!Simple_loop_check()(uv, border))
-    return false;
-  if(newton_steps == 0)
-    return true;
+  // the polisher refuses a start with a flipped or flat face, or a border that is not simple
   Sander_polish_settings ps;
   ps.direction = Sander_polish_direction::NEWTON;
   ps.free_border = true;
