@@ -375,17 +375,22 @@ void check_umfpack_lu()
   b.set(1, 2.);
   SMP_CHECK(!umfpack.linear_solver(S, b, x, D), "a singular matrix was solved");
 
-  // the 64-bit interface (taken for work areas near 2 GB) gives the same solutions, one or two
-  // columns at a time, and refuses the singular matrix too
+  // the 64-bit interface (taken for work areas near 2 GB, here for any) analyses in the column
+  // order of the 32-bit analysis, gives the same solutions, one or two columns at a time, and
+  // refuses the singular matrix too
   typedef CGAL::Eigen_sparse_matrix<double>::EigenType Eigen_matrix;
   SMP::internal::Umfpack_lu<Eigen_matrix> narrow, wide;
-  wide.always_64_bit(true);
+  wide.limit_32_bit_work_area(0.);
   const Eigen_matrix& E = A.eigen_object();
   Eigen::MatrixXd rhs(n, 2), x32, x64;
   for(int i = 0; i < n; ++i)
     rhs.row(i) << std::sin(double(i)), std::cos(3. * i);
   narrow.compute(E);
   wide.compute(E);
+  SMP_CHECK(narrow.ordering_used() == UMFPACK_ORDERING_AMD && wide.ordering_used() == UMFPACK_ORDERING_GIVEN,
+            "the 64-bit analysis ordered the system again (ordering " << wide.ordering_used() << ")");
+  SMP_CHECK(narrow.strategy_used() == UMFPACK_STRATEGY_SYMMETRIC && wide.strategy_used() == UMFPACK_STRATEGY_SYMMETRIC,
+            "the 64-bit analysis took another strategy (" << wide.strategy_used() << ")");
   const bool solved = narrow.info() == Eigen::Success && wide.info() == Eigen::Success &&
                       narrow.solve_columns(rhs, x32, 2u) && wide.solve_columns(rhs, x64, 2u);
   SMP_CHECK(solved && (x32 - x64).cwiseAbs().maxCoeff() < 1e-14 && (E * x64 - rhs).cwiseAbs().maxCoeff() < 1e-12,

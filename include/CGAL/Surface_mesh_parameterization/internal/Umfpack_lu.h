@@ -27,7 +27,9 @@
 // - the columns of a right-hand side are solved in parallel (`solve_columns()`);
 // - the 32-bit interface (`di`) is used while the work area is well under 2 GB, which it cannot
 //   exceed (UMFPACK then fails as out of memory), the 64-bit one (`dl`) beyond: a mesh of a few
-//   million vertices needs more, and the 64-bit indices take more memory on smaller ones.
+//   million vertices needs more, and the 64-bit indices take more memory on smaller ones. The
+//   64-bit analysis then takes the column order of the 32-bit one, where it would order the
+//   system again (METIS on a large system is much of the cost of the analysis).
 
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
@@ -80,6 +82,9 @@ struct Umfpack_interface<Umfpack_index>
   typedef Umfpack_index I;
   static long symbolic(long n, const I* p, const I* i, const double* x, void** s, const double* c, double* r)
   { return long(umfpack_dl_symbolic(I(n), I(n), p, i, x, s, c, r)); }
+  static long ordered_symbolic(long n, const I* p, const I* i, const double* x, const I* q, void** s, const double* c,
+                               double* r)
+  { return long(umfpack_dl_qsymbolic(I(n), I(n), p, i, x, q, s, c, r)); }
   static long numeric(const I* p, const I* i, const double* x, void* s, void** f, const double* c, double* r)
   { return long(umfpack_dl_numeric(p, i, x, s, f, c, r)); }
   static long solve(const I* p, const I* i, const double* x, double* X, const double* B, void* f, const double* c,
@@ -120,9 +125,17 @@ public:
   Eigen::Index rows() const { return m_n; }
   Eigen::Index cols() const { return m_n; }
 
-  // The 64-bit interface whatever the size, from the next `analyzePattern()` on (for tests: it
-  // is otherwise chosen from the size of the work area).
-  void always_64_bit(bool on) { m_always_wide = on; }
+  // The 64-bit interface, from the next `analyzePattern()` on, for work areas above `bytes` (for
+  // tests; the default is half of what 32-bit indices allow): 0 takes it whatever the size,
+  // after a 32-bit analysis whose column order it takes.
+  void limit_32_bit_work_area(double bytes) { m_limit_32_bits = bytes; }
+
+  // How the last analysis ordered the columns: UMFPACK_ORDERING_METIS, _AMD or _GIVEN (the
+  // order of an earlier analysis).
+  int ordering_used() const { return int(m_report[UMFPACK_ORDERING_USED]); }
+
+  // The strategy of the last analysis: UMFPACK_STRATEGY_SYMMETRIC or _UNSYMMETRIC.
+  int strategy_used() const { return int(m_report[UMFPACK_STRATEGY_USED]); }
 
   void compute(const Matrix& A)
   {
@@ -140,12 +153,10 @@ public:
       m_info = Eigen::InvalidInput;
       return;
     }
-    m_wide = m_always_wide;
+    m_wide = false;
     analyze(C);
-    if(m_info == Eigen::Success && !m_wide && !fits_32_bits()) {
-      go_wide();
-      analyze(C);
-    }
+    if(m_info == Eigen::Success && !fits_32_bits())
+      widen(C);
   }
 
   void factorize(const Matrix& A)
@@ -164,8 +175,7 @@ public:
 #endif
     long status = numeric();
     if(status == UMFPACK_ERROR_out_of_memory && !m_wide) { // the estimate was short: the 64-bit interface
-      go_wide();
-      analyze(*m_matrix);
+      widen(*m_matrix);
       copy_pattern(*m_matrix);
       status = m_info == Eigen::Success ? numeric() : long(UMFPACK_ERROR_internal_error);
     }
@@ -249,12 +259,35 @@ private:
     m_rows.assign(C.innerIndexPtr(), C.innerIndexPtr() + C.nonZeros());
   }
 
-  // frees what the 32-bit interface made, and switches to the 64-bit one
-  void go_wide()
+  // frees what the 32-bit interface made and analyses `C` again with the 64-bit one, in the
+  // column order and with the strategy of the 32-bit analysis (or ordering anew if the order
+  // cannot be read; a given order alone would get the unsymmetric strategy and its pivoting),
+  // and its estimate of the factors (an analysis with a given order makes none)
+  void widen(const Matrix& C)
   {
+    const double strategy = m_report[UMFPACK_STRATEGY_USED], entries = m_report[UMFPACK_SYMMETRIC_LUNZ];
+    std::vector<int> order(static_cast<std::size_t>(m_n));
+    int n_row, n_col, n1, nz, fronts, chains;
+    const bool ordered = umfpack_di_get_symbolic(&n_row, &n_col, &n1, &nz, &fronts, &chains, nullptr, order.data(),
+                                                 nullptr, nullptr, nullptr, nullptr, nullptr, nullptr, nullptr,
+#if UMFPACK_MAIN_VERSION >= 6
+                                                 nullptr, // Dmap, since UMFPACK 6
+#endif
+                                                 m_symbolic) == UMFPACK_OK;
     release_numeric();
     free_symbolic();
     m_wide = true;
+    if(ordered) {
+      const std::vector<Umfpack_index> q(order.begin(), order.end());
+      std::vector<int>().swap(order);
+      m_control[UMFPACK_STRATEGY] = strategy;
+      analyze(C, q.data());
+      m_control[UMFPACK_STRATEGY] = UMFPACK_STRATEGY_AUTO;
+      if(m_info == Eigen::Success && strategy == UMFPACK_STRATEGY_SYMMETRIC) // the same order, the same factors
+        m_work_units = (std::max)(work_units(entries), m_report[UMFPACK_VARIABLE_INIT_ESTIMATE]);
+    }
+    if(!ordered || m_info != Eigen::Success)
+      analyze(C);
   }
 
   void free_symbolic()
@@ -264,14 +297,15 @@ private:
     m_symbolic = nullptr;
   }
 
-  // The symbolic analysis of `C` with the interface of `m_wide` (METIS on large systems, AMD if
-  // METIS fails), and the size of the work area it predicts.
-  void analyze(const Matrix& C)
+  // The symbolic analysis of `C` with the interface of `m_wide`, in the column order `given`
+  // (64-bit interface only) or else METIS's on large systems (AMD's if METIS fails) or AMD's,
+  // and the size of the work area it predicts.
+  void analyze(const Matrix& C, const Umfpack_index* given = nullptr)
   {
     const bool metis = m_n >= metis_threshold;
     m_control[UMFPACK_ORDERING] = metis ? UMFPACK_ORDERING_METIS : UMFPACK_ORDERING_AMD;
-    long status = symbolic(C);
-    if(metis && status != UMFPACK_OK) {
+    long status = symbolic(C, given);
+    if(given == nullptr && metis && status != UMFPACK_OK) {
       m_control[UMFPACK_ORDERING] = UMFPACK_ORDERING_AMD;
       status = symbolic(C);
     }
@@ -280,31 +314,41 @@ private:
     m_work_units = 0.;
     // With the symmetric strategy (diagonal pivots, as on these diagonally dominant systems),
     // the estimate of the factors is close; otherwise UMFPACK's default applies.
-    if(m_info == Eigen::Success && m_report[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC) {
-      // 5% above the factors: the frontal matrices share the area (2% on top, measured)
-      m_work_units = (std::max)(1.05 * m_report[UMFPACK_SYMMETRIC_LUNZ],
-                                m_report[UMFPACK_VARIABLE_INIT_ESTIMATE]);
-    }
+    if(m_info == Eigen::Success && m_report[UMFPACK_STRATEGY_USED] == UMFPACK_STRATEGY_SYMMETRIC)
+      m_work_units = (std::max)(work_units(m_report[UMFPACK_SYMMETRIC_LUNZ]), m_report[UMFPACK_VARIABLE_INIT_ESTIMATE]);
+  }
+
+  // The work area, in UMFPACK's units, for factors of `entries` entries: a unit holds a double in
+  // the 32-bit interface and two 64-bit indices (two doubles) in the 64-bit one. The margin is for
+  // the frontal matrices, which share the area, and for the indices of the factors, which take
+  // twice the room in the 64-bit interface.
+  double work_units(double entries) const
+  {
+    return m_wide ? 1.10 * entries / 2. : 1.05 * entries;
   }
 
   // whether the work area the analysis predicts (or, without one, UMFPACK's upper bound) is
-  // under half of what 32-bit indices allow: a margin for the estimate; factorize() switches
-  // interfaces if it is still short
+  // under the limit (by default half of what 32-bit indices allow: a margin for the estimate;
+  // factorize() switches interfaces if it is still short)
   bool fits_32_bits() const
   {
     const double units = m_work_units > 0. ? m_work_units : m_report[UMFPACK_VARIABLE_PEAK_ESTIMATE];
-    return units * double(sizeof(double)) < 0.5 * double(INT_MAX);
+    return units * double(sizeof(double)) < m_limit_32_bits;
   }
 
-  long symbolic(const Matrix& C)
+  long symbolic(const Matrix& C, const Umfpack_index* given = nullptr)
   {
     free_symbolic();
     if(!m_wide)
       return Umfpack_interface<int>::symbolic(long(m_n), C.outerIndexPtr(), C.innerIndexPtr(), C.valuePtr(),
                                               &m_symbolic, m_control, m_report);
     copy_pattern(C);
-    return Umfpack_interface<Umfpack_index>::symbolic(long(m_n), m_columns.data(), m_rows.data(), C.valuePtr(),
-                                                      &m_symbolic, m_control, m_report);
+    typedef Umfpack_interface<Umfpack_index> Wide;
+    return given != nullptr
+             ? Wide::ordered_symbolic(long(m_n), m_columns.data(), m_rows.data(), C.valuePtr(), given, &m_symbolic,
+                                      m_control, m_report)
+             : Wide::symbolic(long(m_n), m_columns.data(), m_rows.data(), C.valuePtr(), &m_symbolic, m_control,
+                              m_report);
   }
 
   long numeric()
@@ -346,7 +390,7 @@ private:
   double m_work_units = 0.;         // size of the work area of the next factorization (0: UMFPACK's default)
   bool m_large = false;
   bool m_wide = false;              // the 64-bit interface, on m_columns and m_rows
-  bool m_always_wide = false;
+  double m_limit_32_bits = 0.5 * double(INT_MAX); // bytes of work area
   std::vector<Umfpack_index> m_columns, m_rows; // the pattern in 64-bit indices, when m_wide
 };
 
