@@ -523,6 +523,45 @@ void parts_count()
   SMP_CHECK(I::number_of_parts(HUGE_VAL, 1.05) == 2, I::number_of_parts(HUGE_VAL, 1.05));
 }
 
+// The parts a chart is cut into are each in one piece: a piece of a part cut off from its
+// largest piece goes to the neighbouring part it shares the most edges with, also when it only
+// touches other detached pieces at first; a piece that no other part touches stays.
+void detached_pieces()
+{
+  namespace I = SMP::internal;
+  // a strip of 8 squares, two triangles each: triangles 2 s and 2 s + 1 in square s; a part is
+  // given per square
+  I::Flat_triangles strip;
+  for(int x = 0; x <= 8; ++x)
+    for(int y = 0; y <= 1; ++y)
+      strip.xyz.push_back({double(x), double(y), 0.});
+  for(int q = 0; q < 8; ++q)
+    strip.tri.push_back({2 * q, 2 * q + 2, 2 * q + 3}), strip.tri.push_back({2 * q, 2 * q + 3, 2 * q + 1});
+  auto joined = [&strip](const std::vector<int>& square_part) {
+    std::vector<int> part;
+    for(int p : square_part) part.insert(part.end(), {p, p});
+    I::join_detached_pieces(strip, part);
+    std::vector<int> result;
+    for(std::size_t t = 0; t < part.size(); t += 2) {
+      if(part[t] != part[t + 1]) return std::vector<int>(); // a square split: never expected
+      result.push_back(part[t]);
+    }
+    return result;
+  };
+  // squares 6-7 (part 0, a piece as large as squares 0-1, which keep the part) go to part 1
+  SMP_CHECK(joined({0, 0, 1, 1, 1, 1, 0, 0}) == std::vector<int>({0, 0, 1, 1, 1, 1, 1, 1}), "not joined to part 1");
+  // square 1 (part 2) goes to part 0 (square 2), then square 0 (part 1), which only touched
+  // square 1 at first, goes to part 0 too; square 7 (part 0) goes to part 1
+  SMP_CHECK(joined({1, 2, 0, 2, 2, 1, 1, 0}) == std::vector<int>({0, 0, 0, 2, 2, 1, 1, 1}), "not joined in two rounds");
+  // two triangles that share no side, in one part: nothing to join them to
+  I::Flat_triangles apart;
+  apart.xyz = {{0., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}, {5., 0., 0.}, {6., 0., 0.}, {5., 1., 0.}};
+  apart.tri = {{0, 1, 2}, {3, 4, 5}};
+  std::vector<int> alone = {0, 0};
+  I::join_detached_pieces(apart, alone);
+  SMP_CHECK(alone == std::vector<int>({0, 0}), "a piece on its own changed parts");
+}
+
 // The atlas does not depend on the number of threads (charts are flattened, and rasterized
 // for the packing, on several at once).
 void thread_independence()
@@ -653,6 +692,7 @@ int main(int argc, char** argv)
   chart_starts();
   thread_independence();
   parts_count();
+  detached_pieces();
   only_flat_polygons();
   scaled_soups();
   progress();

@@ -11,8 +11,11 @@
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <map>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -85,6 +88,72 @@ inline std::vector<int> partition_chart(const Chart_map& chart, int parts)
       if(total[j] > 0.) center[j] = {sum[j][0] / total[j], sum[j][1] / total[j]};
   }
   return label;
+}
+
+// Gives each piece of a part that is cut off from the part's largest piece (through the edges
+// of the chart `chart`) to the neighbouring part whose largest piece it shares the most edges
+// with, until every part is in one piece (pieces that no other part touches stay). Parts chosen
+// in the uv plane can hold pieces that a hole or a fold of the chart keeps apart on the surface,
+// and each such piece would become a chart of its own, seams all around.
+inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& part)
+{
+  const std::size_t n = chart.tri.size();
+  // the triangles across each side, in the chart: pairs of sides of the same edge
+  std::vector<std::array<int, 3> > side_key; // smaller vertex, larger vertex, triangle
+  side_key.reserve(3 * n);
+  for(std::size_t t = 0; t < n; ++t)
+    for(int k = 0; k < 3; ++k) {
+      const int a = chart.tri[t][std::size_t(k)], b = chart.tri[t][std::size_t((k + 1) % 3)];
+      side_key.push_back({(std::min)(a, b), (std::max)(a, b), int(t)});
+    }
+  std::sort(side_key.begin(), side_key.end());
+  std::vector<std::vector<int> > across(n);
+  for(std::size_t i = 0; i + 1 < side_key.size(); ++i)
+    if(side_key[i][0] == side_key[i + 1][0] && side_key[i][1] == side_key[i + 1][1]) {
+      across[std::size_t(side_key[i][2])].push_back(side_key[i + 1][2]);
+      across[std::size_t(side_key[i + 1][2])].push_back(side_key[i][2]);
+    }
+  // the largest pieces keep their part and only grow: each round joins at least one piece to
+  // one of them, or ends
+  for(bool changed = true; changed;) {
+    changed = false;
+    std::vector<int> piece(n, -1);
+    std::vector<std::vector<int> > pieces;
+    for(std::size_t seed = 0; seed < n; ++seed) {
+      if(piece[seed] >= 0) continue;
+      pieces.emplace_back(1, int(seed));
+      piece[seed] = int(pieces.size() - 1);
+      for(std::size_t i = 0; i < pieces.back().size(); ++i)
+        for(int u : across[std::size_t(pieces.back()[i])])
+          if(piece[std::size_t(u)] < 0 && part[std::size_t(u)] == part[seed]) {
+            piece[std::size_t(u)] = piece[seed];
+            pieces.back().push_back(u);
+          }
+    }
+    std::unordered_map<int, std::size_t> largest; // part -> its largest piece (the first, on ties)
+    for(std::size_t p = 0; p < pieces.size(); ++p) {
+      const int label = part[std::size_t(pieces[p][0])];
+      const auto it = largest.find(label);
+      if(it == largest.end() || pieces[p].size() > pieces[it->second].size())
+        largest[label] = p;
+    }
+    std::vector<char> anchored(pieces.size(), 0);
+    for(const auto& l : largest) anchored[l.second] = 1;
+    for(std::size_t p = 0; p < pieces.size(); ++p) {
+      if(anchored[p]) continue;
+      const int label = part[std::size_t(pieces[p][0])];
+      std::map<int, std::size_t> shared; // neighbouring part -> sides shared with its largest piece
+      for(int t : pieces[p])
+        for(int u : across[std::size_t(t)])
+          if(anchored[std::size_t(piece[std::size_t(u)])] && part[std::size_t(u)] != label) ++shared[part[std::size_t(u)]];
+      if(shared.empty()) continue;
+      const auto most = std::max_element(shared.begin(), shared.end(), [](const auto& x, const auto& y) {
+        return x.second < y.second;
+      });
+      for(int t : pieces[p]) part[std::size_t(t)] = most->first;
+      changed = true;
+    }
+  }
 }
 
 CGAL_SMP_END_SOLVER_NAMESPACE

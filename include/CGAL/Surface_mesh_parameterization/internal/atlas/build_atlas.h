@@ -172,10 +172,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   std::vector<std::size_t> every(nt);
   for(std::size_t t = 0; t < nt; ++t) every[t] = t;
   collect(0, n, every);
-  // grows chart c again as `parts` charts, the parts `part` gives its triangles (the part of a
-  // polygon is that of its first triangle: a polygon's triangles stay together); false if one
-  // part would hold them all
-  auto split = [&](std::size_t c, const std::vector<int>& part, int parts) {
+  // grows chart c again as `parts` charts, the parts `part` gives its triangles (each part in
+  // one piece; the part of a polygon is that of its first triangle: a polygon's triangles stay
+  // together); false if one part would hold them all
+  auto split = [&](std::size_t c, std::vector<int> part, int parts) {
+    join_detached_pieces(charts[c].flat, part);
     const std::vector<std::size_t> triangles = charts[c].triangles;
     std::unordered_map<std::size_t, std::size_t> polygon_first;
     for(std::size_t i = 0; i < triangles.size(); ++i)
