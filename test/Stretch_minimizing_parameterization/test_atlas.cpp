@@ -562,6 +562,35 @@ void detached_pieces()
   SMP_CHECK(alone == std::vector<int>({0, 0}), "a piece on its own changed parts");
 }
 
+// A packing cut that does not fill the square better is taken back: charts grown again from a
+// snapshot of the chart growing are the charts of before, vertices included.
+void growing_taken_back()
+{
+  namespace I = SMP::internal;
+  const Soup s = torus(40, 16, false);
+  I::Atlas_triangles m;
+  SMP_CHECK(I::make_atlas_triangles(s.points, s.polygons, m).empty(), "the torus is refused");
+  const std::size_t nt = m.vertex.size();
+  I::Chart_growing g(m);
+  const int n = g.grow(std::vector<char>(nt, 1), 0, 0.5 * 3.14159265358979323846);
+  auto state = [&]() {
+    std::vector<int> v;
+    for(std::size_t t = 0; t < nt; ++t) {
+      v.push_back(g.chart(t));
+      for(int k = 0; k < 3; ++k) v.push_back(g.chart_vertex(int(3 * t) + k));
+    }
+    return v;
+  };
+  const std::vector<int> before = state();
+  const I::Chart_growing::Snapshot snapshot = g.snapshot();
+  std::vector<char> first(nt, 0);
+  for(std::size_t t = 0; t < nt; ++t) first[t] = g.chart(t) == 0;
+  const int made = g.grow(first, n, 0.1, 4, 2);
+  SMP_CHECK(made >= 2 && state() != before, "chart 0 was not grown again (" << made << " charts)");
+  g.restore(snapshot);
+  SMP_CHECK(state() == before, "the charts restored differ from the charts before");
+}
+
 // The atlas does not depend on the number of threads (charts are flattened, and rasterized
 // for the packing, on several at once).
 void thread_independence()
@@ -693,6 +722,7 @@ int main(int argc, char** argv)
   thread_independence();
   parts_count();
   detached_pieces();
+  growing_taken_back();
   only_flat_polygons();
   scaled_soups();
   progress();

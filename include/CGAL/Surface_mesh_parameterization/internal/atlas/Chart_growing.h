@@ -236,6 +236,25 @@ private:
     std::priority_queue<Candidate> heap;
   };
 
+public:
+  // What grow() changes: a copy taken before charts are grown again gives them back.
+  struct Snapshot
+  {
+    std::vector<char> glued;
+    std::vector<int> parent, chart;
+    std::vector<Chart_state> state;
+  };
+  Snapshot snapshot() const { return Snapshot{m_glued, m_parent, m_chart, m_state}; }
+  void restore(Snapshot s)
+  {
+    m_glued.swap(s.glued);
+    m_parent.swap(s.parent);
+    m_chart.swap(s.chart);
+    m_state.swap(s.state);
+  }
+
+private:
+
   void start_chart(int c)
   {
     if(m_state.size() <= std::size_t(c)) m_state.resize(std::size_t(c) + 1);

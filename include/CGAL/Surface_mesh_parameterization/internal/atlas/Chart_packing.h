@@ -42,7 +42,7 @@ struct Packing_settings
   double gutter = 2.;             // texels left between two charts and along the square's sides
   unsigned int coarse_resolution = 256; // of the layouts that only estimate the utilization
   double goal = 0.52;             // utilization below which the longest chart is cut across
-  int max_cut_rounds = 16;        // times one may be
+  int max_cut_rounds = 16;        // cuts kept at most (and twice as many taken back)
   unsigned int threads = 0;       // rasterizing the charts (0: one per core)
 };
 

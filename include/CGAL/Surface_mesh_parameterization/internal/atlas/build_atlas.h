@@ -296,16 +296,16 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   settle(0, true);
 
   // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
-  // longest chart (the one that leaves the most room unused around it) is cut across
+  // longest chart (the one that leaves the most room unused around it) is cut across. A cut
+  // that does not fill the square better is taken back (its seam would buy nothing) and the
+  // next longest chart is tried, until every chart was: then the longest is cut all the same.
   auto t2 = std::chrono::steady_clock::now();
   const double other_stages = r.seconds_cutting + r.seconds_parameterization;
   std::vector<std::size_t> kept;
   std::vector<std::vector<Vec2> > uv;
   std::vector<std::vector<Triangle> > chart_triangles;
   std::vector<double> area_uv, area_3d;
-  double scale_hint = 0.;
-  int round = 0;
-  for(;; ++round) {
+  auto gather = [&]() {
     kept.clear();
     uv.clear();
     chart_triangles.clear();
@@ -319,32 +319,74 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       uv.push_back(charts[c].uv);
       chart_triangles.push_back(charts[c].flat.tri);
     }
-    settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(settings.packing.max_cut_rounds) + 1);
-    if(round == settings.packing.max_cut_rounds)
-      break;
+  };
+  double scale_hint = 0.;
+  auto estimated_utilization = [&]() {
     std::vector<std::vector<Vec2> > turned = uv;
     const Packing_result estimate =
       estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d, settings.packing.threads), settings.packing, scale_hint);
     scale_hint = estimate.scale;
-    if(estimate.utilization >= settings.packing.goal)
-      break;
-    // the longest chart that can be cut
+    return estimate.utilization;
+  };
+  gather();
+  const int rounds = settings.packing.max_cut_rounds;
+  double utilization = rounds > 0 ? estimated_utilization() : 0.;
+  std::vector<char> tried, uncuttable; // per chart: its cut was taken back; it cannot be cut
+  // the longest chart that may be cut (kept.size() if none), among those not tried if `untried`
+  auto longest_chart = [&](bool untried, std::vector<double>& best_along) {
     double longest = 0.;
     std::size_t cut = kept.size();
-    std::vector<double> along, best_along;
+    std::vector<double> along;
     for(std::size_t i = 0; i < kept.size(); ++i)
-      if(units_of(charts[kept[i]].triangles) >= 2) {
+      if(!uncuttable[kept[i]] && !(untried && tried[kept[i]]) && units_of(charts[kept[i]].triangles) >= 2) {
         const double l = chart_length(charts[kept[i]].uv, chart_triangles[i], area_uv[i], area_3d[i], along);
         if(l > longest) { longest = l; cut = i; best_along.swap(along); }
       }
-    const auto t3 = std::chrono::steady_clock::now();
-    const std::size_t begin = charts.size();
-    if(cut < kept.size())
-      cut_across(kept[cut], best_along);
-    r.seconds_cutting += seconds_since(t3);
-    if(charts.size() == begin)
+    return cut;
+  };
+  // rounds count the cuts kept; the cuts taken back are bounded too (each flattens a chart's halves)
+  int round = 0;
+  for(int taken_back = 0; round < rounds && taken_back < 2 * rounds && utilization < settings.packing.goal;) {
+    settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(rounds) + 1);
+    tried.resize(charts.size(), 0);
+    uncuttable.resize(charts.size(), 0);
+    // when every cut was taken back, the longest chart is cut all the same
+    std::vector<double> along;
+    std::size_t cut = longest_chart(true, along);
+    const bool forced = cut == kept.size();
+    if(forced)
+      cut = longest_chart(false, along);
+    if(cut == kept.size())
       break;
-    settle(begin, false); // told as packing rounds
+    const std::size_t c = kept[cut], before = charts.size();
+    Chart_map whole = charts[c];
+    Chart_growing::Snapshot growing = g.snapshot();
+    const auto t3 = std::chrono::steady_clock::now();
+    cut_across(c, along);
+    r.seconds_cutting += seconds_since(t3);
+    if(charts.size() == before) {
+      uncuttable[c] = 1;
+      continue;
+    }
+    settle(before, false); // told as packing rounds
+    gather();
+    const double after = estimated_utilization();
+    if(forced || after > utilization) {
+      utilization = after;
+      if(forced)
+        tried.assign(tried.size(), 0); // the others may fill the square better now
+      ++round;
+      continue;
+    }
+    charts.resize(before);
+    members.resize(before);
+    angle.resize(before);
+    areas.resize(before);
+    charts[c] = std::move(whole);
+    g.restore(std::move(growing));
+    gather();
+    tried[c] = 1;
+    ++taken_back;
   }
   const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
   settings.tell(Atlas_stage::PACKING, std::size_t(round) + 1, std::size_t(round) + 1);
