@@ -145,7 +145,8 @@ inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& 
       std::map<int, std::size_t> shared; // neighbouring part -> sides shared with its largest piece
       for(int t : pieces[p])
         for(int u : across[std::size_t(t)])
-          if(anchored[std::size_t(piece[std::size_t(u)])] && part[std::size_t(u)] != label) ++shared[part[std::size_t(u)]];
+          if(anchored[std::size_t(piece[std::size_t(u)])] && part[std::size_t(u)] != label)
+            ++shared[part[std::size_t(u)]];
       if(shared.empty()) continue;
       const auto most = std::max_element(shared.begin(), shared.end(), [](const auto& x, const auto& y) {
         return x.second < y.second;
