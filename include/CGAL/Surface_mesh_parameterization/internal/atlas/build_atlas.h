@@ -321,8 +321,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     }
   };
   double scale_hint = 0.;
+  // the coarse packing, or the final one once the coarse one was found too hopeful
+  bool final_estimates = false;
   auto estimated_utilization = [&]() {
     std::vector<std::vector<Vec2> > turned = uv;
+    if(final_estimates)
+      return pack_charts(turned, chart_triangles, area_uv, area_3d, settings.packing, scale_hint).utilization;
     const Packing_result estimate =
       estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d, settings.packing.threads), settings.packing, scale_hint);
     scale_hint = estimate.scale;
@@ -345,50 +349,63 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     return cut;
   };
   // rounds count the cuts kept; the cuts taken back are bounded too (each flattens a chart's halves)
-  int round = 0;
-  for(int taken_back = 0; round < rounds && taken_back < 2 * rounds && utilization < settings.packing.goal;) {
-    settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(rounds) + 1);
-    tried.resize(charts.size(), 0);
-    uncuttable.resize(charts.size(), 0);
-    // when every cut was taken back, the longest chart is cut all the same
-    std::vector<double> along;
-    std::size_t cut = longest_chart(true, along);
-    const bool forced = cut == kept.size();
-    if(forced)
-      cut = longest_chart(false, along);
-    if(cut == kept.size())
-      break;
-    const std::size_t c = kept[cut], before = charts.size();
-    Chart_map whole = charts[c];
-    Chart_growing::Snapshot growing = g.snapshot();
-    const auto t3 = std::chrono::steady_clock::now();
-    cut_across(c, along);
-    r.seconds_cutting += seconds_since(t3);
-    if(charts.size() == before) {
-      uncuttable[c] = 1;
-      continue;
-    }
-    settle(before, false); // told as packing rounds
-    gather();
-    const double after = estimated_utilization();
-    if(forced || after > utilization) {
-      utilization = after;
+  int round = 0, taken_back = 0;
+  auto cut_rounds = [&]() {
+    while(round < rounds && taken_back < 2 * rounds && utilization < settings.packing.goal) {
+      settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(rounds) + 1);
+      tried.resize(charts.size(), 0);
+      uncuttable.resize(charts.size(), 0);
+      // when every cut was taken back, the longest chart is cut all the same
+      std::vector<double> along;
+      std::size_t cut = longest_chart(true, along);
+      const bool forced = cut == kept.size();
       if(forced)
-        tried.assign(tried.size(), 0); // the others may fill the square better now
-      ++round;
-      continue;
+        cut = longest_chart(false, along);
+      if(cut == kept.size())
+        break;
+      const std::size_t c = kept[cut], before = charts.size();
+      Chart_map whole = charts[c];
+      Chart_growing::Snapshot growing = g.snapshot();
+      const auto t3 = std::chrono::steady_clock::now();
+      cut_across(c, along);
+      r.seconds_cutting += seconds_since(t3);
+      if(charts.size() == before) {
+        uncuttable[c] = 1;
+        continue;
+      }
+      settle(before, false); // told as packing rounds
+      gather();
+      const double after = estimated_utilization();
+      if(forced || after > utilization) {
+        utilization = after;
+        if(forced)
+          tried.assign(tried.size(), 0); // the others may fill the square better now
+        ++round;
+        continue;
+      }
+      charts.resize(before);
+      members.resize(before);
+      angle.resize(before);
+      areas.resize(before);
+      charts[c] = std::move(whole);
+      g.restore(std::move(growing));
+      gather();
+      tried[c] = 1;
+      ++taken_back;
     }
-    charts.resize(before);
-    members.resize(before);
-    angle.resize(before);
-    areas.resize(before);
-    charts[c] = std::move(whole);
-    g.restore(std::move(growing));
+  };
+  cut_rounds();
+  Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+  if(utilization >= settings.packing.goal && packed.utilization < settings.packing.goal) {
+    // the coarse packing was too hopeful (its cells can be too large to hold the gutter): the
+    // rounds go on, measured by the final packing
+    final_estimates = true;
+    utilization = packed.utilization;
+    tried.assign(tried.size(), 0);
     gather();
-    tried[c] = 1;
-    ++taken_back;
+    cut_rounds();
+    packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
   }
-  const Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
   settings.tell(Atlas_stage::PACKING, std::size_t(round) + 1, std::size_t(round) + 1);
   r.utilization = packed.utilization;
   r.charts = kept.size();
