@@ -175,8 +175,7 @@ public:
 #endif
     long status = numeric();
     if(status == UMFPACK_ERROR_out_of_memory && !m_wide) { // the estimate was short: the 64-bit interface
-      widen(*m_matrix);
-      copy_pattern(*m_matrix);
+      widen(*m_matrix); // its analysis copies the pattern to 64-bit indices
       status = m_info == Eigen::Success ? numeric() : long(UMFPACK_ERROR_internal_error);
     }
     if(status == UMFPACK_ERROR_out_of_memory) { // told as such by the parameterizers
