@@ -397,8 +397,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   cut_rounds();
   Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
   if(utilization >= settings.packing.goal && packed.utilization < settings.packing.goal) {
-    // the coarse packing was too hopeful (its cells can be too large to hold the gutter): the
-    // rounds go on, measured by the final packing
+    // the coarse packing was too hopeful (its cells are coarser, and the gutter can round to
+    // none of them): the rounds go on, measured by the final packing
     final_estimates = true;
     utilization = packed.utilization;
     tried.assign(tried.size(), 0);
