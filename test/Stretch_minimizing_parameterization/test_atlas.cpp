@@ -471,6 +471,22 @@ void chart_of_two_pieces()
             << a.report.flipped_faces << " flipped");
 }
 
+// A chart takes the orientation of its measured faces: a face without area in 3D may have a
+// large uv area of either sign (here against the other face's), which must not turn the chart
+// clockwise, against all the others of the atlas.
+void chart_orientation()
+{
+  SMP::internal::Chart_map chart;
+  chart.triangles = {0, 1};
+  chart.flat.xyz = {{0., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}, {0., 0., 1.}, {1., 0., 1.}, {2., 0., 1.}};
+  chart.flat.tri = {{0, 1, 2}, {3, 4, 5}};          // the second one is flat in 3D
+  chart.corner_vertex = {0, 1, 2, 3, 4, 5};
+  chart.uv = {{0., 0.}, {1., 0.}, {0., 1.}, {0., 0.}, {0., 10.}, {10., 0.}}; // areas 0.5 and -50
+  SMP::internal::measure_chart(chart);
+  const double area = SMP::internal::twice_signed_area(chart.uv[0], chart.uv[1], chart.uv[2]);
+  SMP_CHECK(chart.ok && area > 0., "chart of a flat face: ok " << chart.ok << ", twice the area of the other " << area);
+}
+
 // A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
 // `turn` of its circumference (a whole turn: an open tube, no disk).
 SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
@@ -718,6 +734,7 @@ int main(int argc, char** argv)
   bad_input();
   packing_search();
   chart_of_two_pieces();
+  chart_orientation();
   chart_starts();
   thread_independence();
   parts_count();

@@ -199,14 +199,19 @@ inline void measure_chart(Chart_map& chart)
 {
   chart.ok = false;
   chart.l2 = HUGE_VAL;
+  Flat_stretch measure;
+  Flat_stretch_summary s = measure.evaluate(chart.flat, chart.uv);
+  // the chart's orientation is that of the faces measured: a face without area in 3D can
+  // have any uv, and a large one would turn the whole chart against the others
   double signed_area = 0.;
-  for(const Triangle& t : chart.flat.tri)
-    signed_area += twice_signed_area(chart.uv[std::size_t(t[0])], chart.uv[std::size_t(t[1])], chart.uv[std::size_t(t[2])]);
-  if(signed_area < 0.)
+  for(std::size_t f = 0; f < chart.flat.tri.size(); ++f)
+    if(measure.used(f))
+      signed_area += measure.faces()[f].area_uv;
+  if(signed_area < 0.) {
     for(Vec2& q : chart.uv)
       q[0] = -q[0];
-  Flat_stretch measure;
-  const Flat_stretch_summary s = measure.evaluate(chart.flat, chart.uv);
+    s = measure.evaluate(chart.flat, chart.uv);
+  }
   if(s.flipped > 0 || s.degenerate_uv > 0)
     return;
   chart.l2 = s.degenerate_3d == chart.flat.tri.size() ? 1. : s.l2;
