@@ -5,7 +5,7 @@
 # into inputs of each target (fuzz_smp.cpp: the first byte chooses the target), and the inputs
 # of earlier findings as they were (test/.../fuzz/regressions), run first every time. The corpus
 # grows in build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and
-# fails the script: reproduce it with `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
+# fails the script, which prints it in base64: reproduce it with `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-120}
@@ -35,6 +35,18 @@ done
 parallel=()
 [ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
 # allocator_may_return_null: an allocation too large throws std::bad_alloc, as without ASan
+status=0
+touch build/fuzz/run-started
 ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp build/fuzz/corpus "$seeds" test/Stretch_minimizing_parameterization/fuzz/regressions -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
-  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 "${parallel[@]}"
+  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 "${parallel[@]}" || status=$?
+# a finding is printed last, so that a run on a machine that is gone (CI) can be reproduced:
+# `base64 -d > FILE` of the line
+if [ "$status" -ne 0 ]; then
+  for f in $(find build/fuzz/findings -type f -newer build/fuzz/run-started); do
+    echo "fuzz: finding $(basename "$f"), $(stat -c %s "$f") bytes, in base64:"
+    base64 -w0 "$f"
+    echo
+  done
+fi
+exit "$status"

@@ -129,10 +129,11 @@ inline bool check_off(std::istream& in, std::uintmax_t bytes, std::string& error
   return true;
 }
 
-// A PLY header: counts that the file can hold (CGAL reserves them), and no property before the
-// first element (CGAL 5.5.1 adds it to the last element, of which there is none). Read as CGAL
-// reads it: the signature and the format on the first two lines, whatever they hold, then one
-// keyword a line up to end_header.
+// A PLY header: counts that the file can hold (CGAL reserves them, and skips the items of an
+// element it does not read one by one), and no property before the first element (CGAL 5.5.1
+// adds it to the last element, of which there is none). Read as CGAL reads it: the signature
+// and the format on the first two lines, whatever they hold, then one keyword a line up to
+// end_header.
 inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error)
 {
   std::string line;
@@ -140,16 +141,16 @@ inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error
   bool element = false;
   for(int number = 1; std::getline(in, line); ++number) {
     std::istringstream fields(line);
-    std::string word, name, count;
-    double n = 0.;
+    std::string word, name;
+    std::size_t count = 0; // read as CGAL reads it: "-1" is the largest count
     if(number <= 2 || !(fields >> word))
       continue;
     if(word == "end_header")
       break;
     if(word == "element") {
       element = true;
-      if(fields >> name >> count && whole_number(count, n))
-        announced += n;
+      if(fields >> name >> count)
+        announced += double(count);
     } else if(word == "property" && !element) {
       error = "a PLY property comes before any element";
       return false;

@@ -241,6 +241,11 @@ void check_errors()
   std::ofstream("huge.ply") << "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
                                "property float y\nproperty float z\nend_header\n0 0 0\n";
   check_error("PLY header beyond the file", "huge.ply --atlas", "announces");
+  // found by the fuzz harness: CGAL reads an element's count as an unsigned integer, "-1.5" as
+  // the largest one, and skips the items of an element it does not know one by one (a hang)
+  std::ofstream("negative_element.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                                           "property float y\nproperty float z\nelement junk -1.5\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+  check_error("PLY element of a negative count", "negative_element.ply --atlas", "announces");
   // found by the fuzz harness: CGAL 5.5.1's PLY reader adds a property to an element that is not there
   std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
                                          "property float y\nend_header\n0 0\n";
