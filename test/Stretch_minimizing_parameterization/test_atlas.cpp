@@ -487,6 +487,21 @@ void chart_orientation()
   SMP_CHECK(chart.ok && area > 0., "chart of a flat face: ok " << chart.ok << ", twice the area of the other " << area);
 }
 
+// Found by a random search of the fuzz harness's soups: a quad with a corner a billion units
+// away, whose map without a polish squashed a triangle to about the rounding of the packing
+// (a uv area of 1e-19 in the unit square), which then came out flipped. The packed atlas is
+// checked: such a chart is taken apart and the charts packed again.
+void packing_rounding()
+{
+  const std::vector<Point> points = {Point(-0.5, -2, -0.5), Point(-1.5, 0.25, 1e-300), Point(1.5, -1.75, 0.5), Point(0, -1.25, -0.5), Point(1e-300, 1.25, 1.25), Point(-1.5, 4.9406564584124654e-324, 1e-300), Point(-1.75, 1e-300, -1), Point(0.5, -1, 1.75), Point(-0.75, 0.25, -1.75), Point(-1.75, -1.5, 0.25), Point(1.25, 1.5, 1e-300), Point(-0.75, 1000000000, -1), Point(1, 1.25, 0.75), Point(1.75, -1.25, 1)};
+  const std::vector<Polygon> polygons = {{8, 3, 10}, {4, 3, 8}, {12, 7, 11}, {11, 6, 11}, {10, 10, 3}, {1, 6, 13}, {12, 11, 4, 9, 4, 7}, {}, {12, 9, 2}, {5, 11, 1, 10}, {4, 6, 12}, {10, 9, 3}, {12, 11, 13}, {10, 1, 3}, {4, 2, 10}, {13, 8, 12}, {7, 0, 2}, {1, 9, 10}, {4, 13, 9, 8, 8}, {13, 12, 1}, {0, 1, 3}, {12, 0, 8}, {2, 8, 5, 3}, {0, 6, 1}, {2, 12, 11}, {8}, {}, {6, 3, 9}, {9, 1, 7}, {7, 7, 13}, {12, 9, 3}, {12, 12, 12}, {}, {8, 10, 3}, {9, 13, 3}, {7, 5, 3, 7}, {2, 4, 2}};
+  namespace P = SMP::parameters;
+  const SMP::Atlas a = SMP::make_atlas(points, polygons, P::max_stretch(1.6331372549019607).resolution(1001u)
+                                       .gutter(0.53333333333333333).polish_iterations(0u).number_of_threads(1u));
+  SMP_CHECK(a.report.status == SMP::OK && a.uv.size() == polygons.size() && a.report.flipped_faces == 0,
+            "the quad with a far corner: " << a.report.message << ", " << a.report.flipped_faces << " flipped");
+}
+
 // A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
 // `turn` of its circumference (a whole turn: an open tube, no disk).
 SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
@@ -735,6 +750,7 @@ int main(int argc, char** argv)
   packing_search();
   chart_of_two_pieces();
   chart_orientation();
+  packing_rounding();
   chart_starts();
   thread_independence();
   parts_count();

@@ -131,6 +131,37 @@ inline double area_median(const std::vector<double>& along, const Flat_triangles
   return v.empty() ? 0. : v.back().first;
 }
 
+// The packed charts (`uv`, one per chart of `kept`) measured as one map, a triangle of each
+// chart's in turn; `flipped` receives, per chart, its triangles oriented against the input.
+inline Flat_stretch_summary measure_packed_charts(const std::vector<Chart_map>& charts, const std::vector<std::size_t>& kept,
+                                                  const std::vector<std::vector<Vec2> >& uv, std::vector<std::size_t>& flipped)
+{
+  Flat_triangles all;
+  std::vector<Vec2> all_uv;
+  std::vector<std::size_t> chart_of;
+  for(std::size_t i = 0; i < kept.size(); ++i) {
+    const Chart_map& chart = charts[kept[i]];
+    for(const Triangle& t : chart.flat.tri) {
+      for(int k = 0; k < 3; ++k) {
+        all.xyz.push_back(chart.flat.xyz[std::size_t(t[std::size_t(k)])]);
+        all_uv.push_back(uv[i][std::size_t(t[std::size_t(k)])]);
+      }
+      const int b = int(all.xyz.size());
+      all.tri.push_back({b - 3, b - 2, b - 1});
+      chart_of.push_back(i);
+    }
+  }
+  Flat_stretch measure;
+  const Flat_stretch_summary s = measure.evaluate(all, all_uv);
+  // every chart is laid out counterclockwise: a face of negative uv area is flipped, unless it
+  // has no area to speak of, in 3D or in uv (the package's measure leaves those out, as here)
+  flipped.assign(kept.size(), 0);
+  for(std::size_t t = 0; t < all.tri.size(); ++t)
+    if(measure.used(t) && measure.faces()[t].area_uv < 0.)
+      ++flipped[chart_of[t]];
+  return s;
+}
+
 // The stages after the input: charts, their maps, the packing, the uv of the corners of the
 // triangles (`corner_written`: per polygon corner, whether it got one; `vertex_uv`: a uv of
 // every welded vertex in a chart).
@@ -406,6 +437,26 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     cut_rounds();
     packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
   }
+  // The packing rounds the charts' uv: a face that a chart's map squashed to about that
+  // rounding (LSCM's map of a needle, kept without a polish) can come out flipped. Such a
+  // chart is taken as one that could not be flattened (grown again smaller, or, if it is one
+  // polygon, its triangles laid out alone: those keep their orientation), and all are packed again.
+  // (A bound on the passes all the same: each takes the flipped charts further apart.)
+  std::vector<std::size_t> flipped;
+  Flat_stretch_summary measured = measure_packed_charts(charts, kept, uv, flipped);
+  auto any_flipped = [&flipped]() { return std::any_of(flipped.begin(), flipped.end(), [](std::size_t f) { return f > 0; }); };
+  for(int pass = 0; pass < 64 && any_flipped(); ++pass) {
+    const std::size_t before = charts.size();
+    for(std::size_t i = 0; i < kept.size(); ++i)
+      if(flipped[i] > 0) {
+        charts[kept[i]].ok = false;
+        cut_if_needed(kept[i]);
+      }
+    settle(before, false);
+    gather();
+    packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+    measured = measure_packed_charts(charts, kept, uv, flipped);
+  }
   settings.tell(Atlas_stage::PACKING, std::size_t(round) + 1, std::size_t(round) + 1);
   r.utilization = packed.utilization;
   r.charts = kept.size();
@@ -416,8 +467,6 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   corner_written.resize(number_of_polygons);
   for(std::size_t p = 0; p < number_of_polygons; ++p)
     corner_written[p].assign(atlas.uv[p].size(), 0);
-  Flat_triangles all;
-  std::vector<Vec2> all_uv;
   for(std::size_t i = 0; i < kept.size(); ++i) {
     const Chart_map& chart = charts[kept[i]];
     for(std::size_t j = 0; j < chart.triangles.size(); ++j) {
@@ -430,26 +479,17 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         atlas.uv[p][corner] = q;
         corner_written[p][corner] = 1;
         vertex_uv.emplace(m.vertex[t][std::size_t(k)], q);
-        all.xyz.push_back(m.xyz[std::size_t(m.vertex[t][std::size_t(k)])]);
-        all_uv.push_back(q);
       }
-      const int b = int(all.xyz.size());
-      all.tri.push_back({b - 3, b - 2, b - 1});
     }
   }
   // polygons without area are in chart 0: with no other polygon, chart 0 holds them alone
   r.charts = (std::max)(kept.size(), std::size_t(number_of_polygons > 0 ? 1 : 0));
 
-  Flat_stretch measure;
-  const Flat_stretch_summary s = measure.evaluate(all, all_uv);
-  r.l2_stretch = s.l2;
-  r.linf_stretch = s.linf;
-  // every chart is laid out counterclockwise: a face of negative uv area is flipped, unless it
-  // has no area to speak of, in 3D or in uv (the package's measure leaves those out, as here)
+  r.l2_stretch = measured.l2;
+  r.linf_stretch = measured.linf;
   r.flipped_faces = 0;
-  for(std::size_t t = 0; t < all.tri.size(); ++t)
-    if(measure.used(t) && measure.faces()[t].area_uv < 0.)
-      ++r.flipped_faces;
+  for(std::size_t f : flipped)
+    r.flipped_faces += f;
 
   // seams: edges of two or more sides that are not one glued pair, among the sides of the
   // input's polygons (the diagonals that split them are no edges of the input)
