@@ -1,15 +1,19 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harness (clang-14, ASan + UBSan) in build/fuzz and runs it for SECONDS
 # (default 120; CI runs it briefly, developers for hours: `bash scripts/fuzz.sh 3600`), on
-# JOBS processes (default 1). Seeds: the small bundled meshes and test/.../fuzz/seeds, made
-# into inputs of each target (fuzz_smp.cpp: the first byte chooses the target), and the inputs
-# of earlier findings as they were (test/.../fuzz/regressions), run first every time. The corpus
-# grows in build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and
-# fails the script, which prints it in base64: reproduce it with `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
+# JOBS processes (default 1), with the random seed SEED (default 0: a new one each run; one job
+# from a given seed and an empty build/fuzz/corpus repeats a run, CI's included). Inputs to
+# start from: the small bundled meshes and test/.../fuzz/seeds, made into inputs of each target
+# (fuzz_smp.cpp: the first byte chooses the target), and the inputs of earlier findings as they
+# were (test/.../fuzz/regressions), run first every time. The corpus grows in build/fuzz/corpus
+# across runs. A finding is written to build/fuzz/findings/ and fails the script, which prints
+# it in base64: reproduce it with
+# `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-120}
 jobs=${2:-1}
+seed=${3:-0} # 0: libFuzzer draws one; CI gives one, so that its run can be repeated here
 
 bash scripts/install-deps.sh clang-14 libclang-rt-14-dev
 
@@ -39,7 +43,7 @@ status=0
 touch build/fuzz/run-started
 ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
   build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp build/fuzz/corpus "$seeds" test/Stretch_minimizing_parameterization/fuzz/regressions -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
-  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 "${parallel[@]}" || status=$?
+  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 -seed="$seed" "${parallel[@]}" || status=$?
 # a finding is printed last, so that a run on a machine that is gone (CI) can be reproduced:
 # `base64 -d > FILE` of the line
 if [ "$status" -ne 0 ]; then

@@ -29,6 +29,7 @@
 
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -133,6 +134,18 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
   const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
   if(loops.size() != 1 || euler != 1)
+    return false;
+  // LSCM fixes the chart's extremes along the two longest sides of its bounding box (CGAL's
+  // Two_vertices_parameterizer_3): a chart without extent along two of the axes has none
+  std::array<double, 3> low = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, high = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for(const Vec3& p : flat.xyz)
+    for(std::size_t i = 0; i < 3; ++i) {
+      low[i] = (std::min)(low[i], p[i]);
+      high[i] = (std::max)(high[i], p[i]);
+    }
+  std::array<double, 3> extent = {high[0] - low[0], high[1] - low[1], high[2] - low[2]};
+  std::sort(extent.begin(), extent.end());
+  if(!(extent[1] > 0.))
     return false;
   auto uvmap = sm.add_property_map<Chart_vertex, Chart_kernel::Point_2>("v:conformal_uv").first;
   auto vimap = sm.add_property_map<Chart_vertex, int>("v:conformal_index").first;
