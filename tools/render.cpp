@@ -144,7 +144,7 @@ bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int
 }
 
 std::string render_surface_png(const std::string& file, const Textured_mesh& mesh, int width, int height,
-                               int up, double yaw, double pitch, bool checkerboard, int checks)
+                               int up, double yaw, double pitch, bool checkerboard, int checks, bool edges)
 {
   std::vector<unsigned char> buffer(std::size_t(width) * height * 4);
   std::unique_ptr<std::remove_pointer<OSMesaContext>::type, void (*)(OSMesaContext)> context(
@@ -228,10 +228,16 @@ std::string render_surface_png(const std::string& file, const Textured_mesh& mes
     glEnable(GL_TEXTURE_2D);
   }
 
+  if(edges) { // the faces pushed back, so that their edges are drawn over them
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.f, 1.f);
+  }
   glBegin(GL_TRIANGLES);
   for(std::size_t f = 0; f < mesh.faces.size(); ++f) {
     if(checkerboard) {
       glColor3d(1, 1, 1);
+    } else if(mesh.face_stretch.empty()) {
+      glColor3d(0.85, 0.85, 0.82);
     } else {
       const auto col = stretch_color(f < mesh.face_stretch.size() ? mesh.face_stretch[f] : 1.);
       glColor3d(col[0], col[1], col[2]);
@@ -245,6 +251,17 @@ std::string render_surface_png(const std::string& file, const Textured_mesh& mes
     }
   }
   glEnd();
+  if(edges) {
+    glDisable(GL_TEXTURE_2D);
+    glDisable(GL_LIGHTING);
+    glColor3d(0.15, 0.15, 0.2);
+    glBegin(GL_LINES);
+    for(const auto& f : mesh.faces)
+      for(int k = 0; k < 3; ++k)
+        for(int v : {f[k], f[(k + 1) % 3]})
+          glVertex3d(mesh.xyz[v][0], mesh.xyz[v][1], mesh.xyz[v][2]);
+    glEnd();
+  }
   glFinish();
   if(texture != 0)
     glDeleteTextures(1, &texture);

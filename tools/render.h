@@ -42,9 +42,10 @@ bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int
 // Renders the surface with model axis `up` (0: x, 1: y, 2: z) upwards, seen from `yaw` degrees
 // around it (at 0 the viewer is on the -y side of the model for z up, on the +z side otherwise)
 // and `pitch` degrees above, either textured by the checkerboard (`checks` per unit of uv) or
-// coloured by stretch. Returns an empty string on success, else what went wrong.
+// coloured by stretch (light grey without `mesh.face_stretch`), with the triangles' edges drawn
+// if `edges`. Returns an empty string on success, else what went wrong.
 std::string render_surface_png(const std::string& file, const Textured_mesh& mesh, int width, int height,
-                               int up, double yaw, double pitch, bool checkerboard, int checks);
+                               int up, double yaw, double pitch, bool checkerboard, int checks, bool edges = false);
 
 } // namespace smp_tools
 

@@ -2,13 +2,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // smp-remesh: remeshes a disk-like triangle mesh file with two of its parameterizations
-// (remesh_with_parameterizations()) and writes the new mesh and a JSON report of its quality.
+// (remesh_with_parameterizations()) and writes the new mesh, a JSON report of its quality and,
+// if asked, a picture of it.
 // Run without arguments for the options.
 
 #include "smp_command_line.h"
 #include "smp_input.h"
 #include "smp_output.h"
 #include "smp_surface_distance.h"
+#include "render.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -23,6 +25,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -31,6 +34,7 @@
 #include <new>
 #include <sstream>
 #include <string>
+#include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
@@ -42,10 +46,10 @@ namespace {
 
 struct Options
 {
-  std::string input, output, report, pair = "u0-uopt";
+  std::string input, output, report, picture, pair = "u0-uopt";
   long long vertices = 0;
   double eta = 1.;
-  int iterations = 20, threads = 0;
+  int iterations = 20, threads = 0, size = 800, up = 2;
   bool quiet = false;
 };
 
@@ -55,6 +59,7 @@ Options parse(int argc, char** argv)
 {
   namespace po = boost::program_options;
   Options o;
+  std::string up = "z";
   po::options_description described("options");
   described.add_options()
     ("help,h", "this text")
@@ -67,6 +72,9 @@ Options parse(int argc, char** argv)
     ("eta", po::value(&o.eta)->value_name("X"), "weight update exponent of U^1 and U^opt, 0 < X <= 1 (default 1)")
     ("iterations", po::value(&o.iterations)->value_name("N"), "cap on the steps of U^opt (default 20)")
     ("threads", po::value(&o.threads)->value_name("N"), "threads of the parameterization (default 0: one per core)")
+    ("picture", po::value(&o.picture)->value_name("PNG"), "a picture of the new mesh and its edges (three-quarter view)")
+    ("size", po::value(&o.size)->value_name("PX"), "picture size in pixels (default 800)")
+    ("up", po::value(&up)->value_name("A"), "the model's up axis in the picture: x, y or z (default z)")
     ("quiet,q", po::bool_switch(&o.quiet), "no summary line");
   const po::variables_map vm = smp_tools::parse_command_line(
       argc, argv, "smp-remesh", described, o.input,
@@ -87,6 +95,13 @@ Options parse(int argc, char** argv)
     die("option --iterations: give a whole number from 1 to 10000", 2);
   if(o.threads < 0 || o.threads > 1024)
     die("option --threads: give a whole number from 0 to 1024", 2);
+  if(!o.picture.empty() && smp_tools::internal::lower_extension(o.picture) != ".png")
+    die("the picture must end in .png: " + o.picture, 2);
+  if(o.size < 16 || o.size > 8192)
+    die("option --size: give a whole number from 16 to 8192", 2);
+  if(up != "x" && up != "y" && up != "z")
+    die("option --up: give x, y or z", 2);
+  o.up = up[0] - 'x';
   if(o.report.empty())
     o.report = fs::path(o.output).replace_extension(".json").string();
   return o;
@@ -156,6 +171,25 @@ int run(int argc, char** argv)
   if(!smp_tools::write_atomically(o.output, mesh_text(out, smp_tools::internal::lower_extension(o.output)), error) ||
      !smp_tools::write_atomically(o.report, j.dump(2) + "\n", error))
     die(error);
+  if(!o.picture.empty()) {
+    smp_tools::Textured_mesh picture;
+    std::vector<int> index(out.num_vertices(), -1); // removed vertices included
+    for(const auto v : out.vertices()) {
+      index[v.idx()] = int(picture.xyz.size());
+      picture.xyz.push_back({out.point(v).x(), out.point(v).y(), out.point(v).z()});
+    }
+    for(const auto f : out.faces()) {
+      std::array<int, 3> corners{};
+      int k = 0;
+      for(const auto v : vertices_around_face(out.halfedge(f), out))
+        corners[std::size_t(k++)] = index[v.idx()];
+      picture.faces.push_back(corners);
+      picture.corner_uv.push_back({});
+    }
+    const std::string failure = smp_tools::render_surface_png(o.picture, picture, o.size, o.size, o.up, -40., 20., false, 0, true);
+    if(!failure.empty())
+      die("rendering " + o.picture + ": " + failure);
+  }
   if(r.wrong_faces > 0)
     std::cerr << "smp-remesh: warning: " << r.wrong_faces << " triangles cross another or are turned against the "
               << "surface (a part too thin for this vertex count: ask for more vertices)" << std::endl;

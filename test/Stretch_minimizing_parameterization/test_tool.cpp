@@ -369,6 +369,11 @@ void check_remesh()
   SMP_CHECK(run(nefertiti + " -n 800 --pair u0 -q -o out_remesh/nefertiti_u0.obj --report out_remesh/u0.json",
                 SMP_REMESH_TOOL).status == 0 && fs::exists("out_remesh/nefertiti_u0.obj") && fs::exists("out_remesh/u0.json"),
             "smp-remesh: an OBJ with its report elsewhere");
+  int w = 0, h = 0;
+  double spread = 0.;
+  SMP_CHECK(run(nefertiti + " -n 800 -q -o out_remesh/pictured.off --picture out_remesh/pictured.png --size 200 --up y",
+                SMP_REMESH_TOOL).status == 0 && png_facts("out_remesh/pictured.png", w, h, spread) && w == 200 && h == 200 &&
+            spread > 10., "smp-remesh: the picture is " << w << " x " << h << ", spread " << spread);
   const std::string out = " -o out_remesh/failed.off";
   check_error("remesh: no vertex count", nefertiti + out, "--vertices", SMP_REMESH_TOOL);
   check_error("remesh: 2 vertices", nefertiti + " -n 2" + out, "--vertices", SMP_REMESH_TOOL);
@@ -377,6 +382,8 @@ void check_remesh()
   check_error("remesh: output format", nefertiti + " -n 100 -o out_remesh/failed.xyz", ".off", SMP_REMESH_TOOL);
   check_error("remesh: unknown pair", nefertiti + " -n 100 --pair best" + out, "pair", SMP_REMESH_TOOL);
   check_error("remesh: eta out of range", nefertiti + " -n 100 --eta 2" + out, "eta", SMP_REMESH_TOOL);
+  check_error("remesh: picture format", nefertiti + " -n 100 --picture out_remesh/failed.jpg" + out, ".png", SMP_REMESH_TOOL);
+  check_error("remesh: picture axis", nefertiti + " -n 100 --picture out_remesh/failed.png --up w" + out, "--up", SMP_REMESH_TOOL);
   check_error("remesh: closed mesh", smp_test::data_file("bear.off") + " -n 100" + out, "border", SMP_REMESH_TOOL);
   check_error("remesh: two components", "two.off -n 100" + out, "components", SMP_REMESH_TOOL);
   check_error("remesh: quads", "quads.off -n 100" + out, "triangle", SMP_REMESH_TOOL);
