@@ -352,12 +352,18 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     }
   };
   double scale_hint = 0.;
-  // the coarse packing, or the final one once the coarse one was found too hopeful
+  // the coarse packing, or the final one once the coarse one was found too hopeful; a final
+  // packing is kept (`trial`) until the round knows whether its cut stays (`accepted`)
   bool final_estimates = false;
+  std::vector<std::vector<Vec2> > trial_uv, accepted_uv;
+  Packing_result trial, accepted;
   auto estimated_utilization = [&]() {
     std::vector<std::vector<Vec2> > turned = uv;
-    if(final_estimates)
-      return pack_charts(turned, chart_triangles, area_uv, area_3d, settings.packing, scale_hint).utilization;
+    if(final_estimates) {
+      trial = pack_charts(turned, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+      trial_uv.swap(turned);
+      return trial.utilization;
+    }
     const Packing_result estimate =
       estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d, settings.packing.threads), settings.packing, scale_hint);
     scale_hint = estimate.scale;
@@ -409,6 +415,10 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       const double after = estimated_utilization();
       if(forced || after > utilization) {
         utilization = after;
+        if(final_estimates) {
+          accepted = trial;
+          accepted_uv.swap(trial_uv);
+        }
         if(forced)
           tried.assign(tried.size(), 0); // the others may fill the square better now
         ++round;
@@ -432,10 +442,14 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     // none of them): the rounds go on, measured by the final packing
     final_estimates = true;
     utilization = packed.utilization;
+    accepted = packed;
+    accepted_uv.swap(uv);
     tried.assign(tried.size(), 0);
     gather();
     cut_rounds();
-    packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+    // a cut taken back restores the charts of the last one kept: their packing is `accepted`
+    packed = accepted;
+    uv.swap(accepted_uv);
   }
   // The packing rounds the charts' uv: a face that a chart's map squashed to about that
   // rounding (LSCM's map of a needle, kept without a polish) can come out flipped. Such a
