@@ -541,6 +541,59 @@ void chart_starts()
   SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
 }
 
+// A fold inside a map is undone where it is, and only there; a fold of border vertices only is
+// left (the map unchanged) for the other start. On a planar grid, whose mean-value weights
+// reproduce it (linear precision), the folded vertex goes back to its place.
+void interior_fold_repair()
+{
+  namespace I = SMP::internal;
+  const int n = 6; // vertices per side
+  I::Chart_mesh sm;
+  std::vector<I::Vec3> xyz;
+  std::vector<I::Triangle> triangles;
+  std::vector<I::Vec2> grid;
+  std::vector<I::Chart_vertex> vd;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      xyz.push_back({double(i), double(j), 0.});
+      grid.push_back({double(i), double(j)});
+      vd.push_back(sm.add_vertex(I::Chart_kernel::Point_3(i, j, 0)));
+    }
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      for(const I::Triangle& t : {I::Triangle{a, b, d}, I::Triangle{a, d, c}}) {
+        triangles.push_back(t);
+        sm.add_face(vd[std::size_t(t[0])], vd[std::size_t(t[1])], vd[std::size_t(t[2])]);
+      }
+    }
+  auto flipped = [&](const std::vector<I::Vec2>& uv) {
+    int f = 0;
+    for(const I::Triangle& t : triangles)
+      f += !(I::twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]) > 0.);
+    return f;
+  };
+  // an inner vertex pushed across its neighbour, and a second fold next to it
+  std::vector<I::Vec2> uv = grid;
+  uv[2 * n + 2] = {3.6, 2.3};
+  uv[3 * n + 3] = {2.2, 2.8};
+  const int before = flipped(uv);
+  const bool repaired = I::repair_interior_folds(sm, xyz, triangles, uv);
+  double error = 0.;
+  for(std::size_t v = 0; v < uv.size(); ++v)
+    error = (std::max)(error, std::abs(uv[v][0] - grid[v][0]) + std::abs(uv[v][1] - grid[v][1]));
+  SMP_CHECK(before > 0 && repaired && flipped(uv) == 0 && error < 1e-12,
+            "inner folds: " << before << " flipped before, repaired " << repaired << ", " << flipped(uv)
+            << " after, largest move from the grid " << error);
+  // a corner pushed over the diagonal of its square, the one triangle of three border vertices
+  uv = grid;
+  uv[n - 1] = {n - 1.8, 0.9};
+  const std::vector<I::Vec2> folded = uv;
+  const bool border_repaired = I::repair_interior_folds(sm, xyz, triangles, uv);
+  SMP_CHECK(flipped(folded) > 0 && !border_repaired && uv == folded,
+            "border fold: repaired " << border_repaired << ", uv changed " << (uv != folded));
+}
+
 // The number of parts a chart far above the bound is cut into, including a bound so close to 1
 // that the ratio of the excesses overflows (found by the fuzz harness: it was converted to int).
 void parts_count()
@@ -752,6 +805,7 @@ int main(int argc, char** argv)
   chart_orientation();
   packing_rounding();
   chart_starts();
+  interior_fold_repair();
   thread_independence();
   parts_count();
   detached_pieces();

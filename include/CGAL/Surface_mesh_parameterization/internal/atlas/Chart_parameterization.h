@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
 #include <CGAL/Eigen_matrix.h>
@@ -163,6 +164,8 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   std::vector<int> border;
   for(Chart_halfedge h : halfedges_around_face(bhd, sm))
     border.push_back(int(target(h, sm)));
+  // a map that is a bijection but for a few folded triangles inside is mended where they are
+  repair_interior_folds(sm, flat.xyz, flat.tri, uv);
   // the polisher refuses a start with a flipped or flat face, or a border that is not simple
   Sander_polish_settings ps;
   ps.direction = Sander_polish_direction::NEWTON;
