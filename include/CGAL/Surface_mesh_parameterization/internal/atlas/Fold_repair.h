@@ -71,7 +71,7 @@ bool repair_interior_folds(const TriangleMesh& tm, const std::vector<Vec3>& xyz,
   std::vector<std::size_t> ring_index;
   std::vector<double> w;
   for(int r = 0; r <= max_rings; ++r) {
-    if(r > 0) { // one ring more, of inner vertices
+    if(r > 0) { // one ring more, of inner vertices (none left: the same solve again)
       const std::vector<char> before = moved;
       for(std::size_t v = 0; v < nv; ++v)
         if(before[v])
@@ -79,6 +79,8 @@ bool repair_interior_folds(const TriangleMesh& tm, const std::vector<Vec3>& xyz,
             const std::size_t s = std::size_t(get(vim, source(h, tm)));
             if(!on_border[s]) moved[s] = 1;
           }
+      if(moved == before)
+        return false;
     }
     std::vector<int> unknown(nv, -1);
     int n = 0;
