@@ -244,12 +244,12 @@ std::vector<std::array<std::size_t, 3> > ear_clipping(const std::vector<std::arr
   return ears;
 }
 
-void run(const Soup& s, double max_l2)
+SMP::Atlas_report run(const Soup& s, double max_l2)
 {
   const SMP::Atlas atlas = SMP::make_atlas(s.points, s.polygons);
   const SMP::Atlas_report& r = atlas.report;
   SMP_CHECK(r.status == SMP::OK, s.name << ": " << r.message);
-  if(r.status != SMP::OK) return;
+  if(r.status != SMP::OK) return r;
   SMP_CHECK(atlas.uv.size() == s.polygons.size() && atlas.chart.size() == s.polygons.size(), s.name);
   // fans of the polygons, each from the first corner whose fan is positive in uv (the atlas
   // may split a polygon along other diagonals; a polygon without one is checked from corner
@@ -305,6 +305,7 @@ void run(const Soup& s, double max_l2)
             << "% of the edge length, utilization " << r.utilization << ", " << r.seconds << " s (cut "
             << r.seconds_cutting << ", flatten " << r.seconds_parameterization << ", pack " << r.seconds_packing << ")"
             << std::endl;
+  return r;
 }
 
 Soup read(const std::string& name)
@@ -594,6 +595,30 @@ void interior_fold_repair()
             "border fold: repaired " << border_repaired << ", uv changed " << (uv != folded));
 }
 
+// A chart grown around a hole closes on itself, leaving a slit from the hole to its border; its
+// map closes the slit and keeps the hole open (filled by guards through the polish) instead of
+// a seam: a flat square of quads with three square holes is one chart, without seams, mapped
+// without stretch (cut open at its slits, LSCM's map of it lays the slits' sides over each other).
+void holes_without_seams()
+{
+  Soup s{"square with three holes", {}, {}};
+  const int n = 12;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      s.points.emplace_back(i, j, 0);
+  auto in_hole = [](int i, int j) {
+    return (i >= 2 && i < 4 && j >= 2 && j < 4) || (i >= 7 && i < 9 && j >= 3 && j < 5) || (i >= 4 && i < 6 && j >= 8 && j < 10);
+  };
+  auto id = [n](int i, int j) { return std::size_t(j * (n + 1) + i); };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      if(!in_hole(i, j))
+        s.polygons.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  const SMP::Atlas_report r = run(s, 1.05);
+  SMP_CHECK(r.charts == 1 && r.seam_length == 0. && std::abs(r.l2_stretch - 1.) < 1e-9,
+            s.name << ": " << r.charts << " charts, seams " << r.seam_length << ", L2 " << r.l2_stretch);
+}
+
 // The number of parts a chart far above the bound is cut into, including a bound so close to 1
 // that the ratio of the excesses overflows (found by the fuzz harness: it was converted to int).
 void parts_count()
@@ -806,6 +831,7 @@ int main(int argc, char** argv)
   packing_rounding();
   chart_starts();
   interior_fold_repair();
+  holes_without_seams();
   thread_independence();
   parts_count();
   detached_pieces();

@@ -103,6 +103,13 @@ public:
   bool glued(int s) const { return m_glued[s] != 0; }
   // The chart vertex of a corner: one representative corner per chart vertex.
   int chart_vertex(int corner) { return find(corner); }
+  // Glues side s to its mate, both in one chart: a slit of the chart closed by its map, which
+  // then has a hole (the caller checked that the chart stays a surface).
+  void close_slit(int s)
+  {
+    if(m_mate[s] >= 0 && !m_glued[s])
+      glue(s);
+  }
 
   // Grows charts over the triangles whose `allowed` flag is set (one per triangle), numbered
   // from `first_chart`: a triangle joins a chart while its polygon's normal stays within

@@ -8,7 +8,9 @@
 // per chart vertex), then Sander's stretch lowered with a free border (flip-free, the border
 // never crossing itself) from one of two starts: CGAL's LSCM where its map is a bijection (it
 // is cheap, and often much closer to the least stretch), else this package's stretch-minimizing
-// iteration from a fixed circular border. A chart of one triangle is laid out isometrically.
+// iteration from a fixed circular border. A chart that closed around a hole is first flattened
+// with the hole kept (LSCM, the hole filled by guard triangles), without the seam to it. A
+// chart of one triangle is laid out isometrically.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -24,6 +26,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
@@ -34,6 +37,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -51,6 +56,11 @@ struct Chart_map
   Flat_triangles flat;                   // the chart in 3D, by chart vertex
   double l2 = HUGE_VAL;                  // normalized L2 stretch of the chart
   bool ok = false;
+  // The chart's slits: pairs of its sides (3 t + k, t an input triangle) that are the two sides
+  // of one edge, both in the chart and not glued, where the growing closed around a hole or
+  // another chart. `slits_closed`: the map glues them (uv equal on both sides).
+  std::vector<std::pair<int, int> > slits;
+  bool slits_closed = false;
 };
 
 struct Chart_parameterization_settings
@@ -81,6 +91,14 @@ inline void make_chart_vertices(const Atlas_triangles& m, Chart_growing& g, Char
   }
   for(std::size_t i = 0; i < chart.triangles.size(); ++i)
     chart.flat.tri.push_back({chart.corner_vertex[3 * i], chart.corner_vertex[3 * i + 1], chart.corner_vertex[3 * i + 2]});
+  chart.slits.clear();
+  chart.slits_closed = false;
+  for(std::size_t t : chart.triangles)
+    for(int k = 0; k < 3; ++k) {
+      const int side = int(3 * t) + k, mate = g.mate(side);
+      if(side < mate && !g.glued(side) && g.chart(std::size_t(mate / 3)) == g.chart(t))
+        chart.slits.emplace_back(side, mate);
+    }
 }
 
 // The chart's triangle laid out with its 3D shape; a flat one gets a thin positive triangle
@@ -127,9 +145,11 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
 
 // LSCM's map of the chart polished by free-border Newton steps, if the chart is a disk and
 // LSCM's map of it is a bijection (every face of positive area, the border loop simple: then
-// no two triangles overlap, and the polish keeps it so); false otherwise.
+// no two triangles overlap, and the polish keeps it so); false otherwise. The faces of `sm` are
+// those of `flat`, then the `guard` faces (holes filled): they keep their place in the map
+// without counting in its stretch.
 inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Flat_triangles& flat,
-                                   unsigned int newton_steps, std::vector<Vec2>& uv)
+                                   const std::vector<Triangle>& guard, unsigned int newton_steps, std::vector<Vec2>& uv)
 {
   std::vector<Chart_halfedge> loops;
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
@@ -165,7 +185,9 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   for(Chart_halfedge h : halfedges_around_face(bhd, sm))
     border.push_back(int(target(h, sm)));
   // a map that is a bijection but for a few folded triangles inside is mended where they are
-  repair_interior_folds(sm, flat.xyz, flat.tri, uv);
+  std::vector<Triangle> all = flat.tri;
+  all.insert(all.end(), guard.begin(), guard.end());
+  repair_interior_folds(sm, flat.xyz, all, uv);
   // the polisher refuses a start with a flipped or flat face, or a border that is not simple
   Sander_polish_settings ps;
   ps.direction = Sander_polish_direction::NEWTON;
@@ -173,8 +195,7 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   ps.threads = 1;
   ps.max_iterations = newton_steps;
   Sander_energy_polisher<> polisher;
-  return polisher.polish(flat, std::vector<Triangle>(), std::vector<char>(uv.size(), 0), border, uv, ps).status ==
-         Sander_polish_status::OK;
+  return polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps).status == Sander_polish_status::OK;
 }
 
 // The stretch-minimizing parameterizer (LOWEST_STRETCH from a circular border, then the polish
@@ -236,6 +257,104 @@ inline void measure_chart(Chart_map& chart)
     chart.ok = chart.ok && std::isfinite(q[0]) && std::isfinite(q[1]);
 }
 
+// Builds `sm` from `flat`; false if a face cannot be added (the triangles do not make a
+// manifold surface).
+inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
+{
+  std::vector<Chart_vertex> vd;
+  vd.reserve(flat.xyz.size());
+  for(const Vec3& p : flat.xyz)
+    vd.push_back(sm.add_vertex(Chart_kernel::Point_3(p[0], p[1], p[2])));
+  for(const Triangle& t : flat.tri)
+    if(sm.add_face(vd[std::size_t(t[0])], vd[std::size_t(t[1])], vd[std::size_t(t[2])]) == Chart_mesh::null_face())
+      return false;
+  return true;
+}
+
+// The chart with its slits closed, so that it has holes instead: flattened from LSCM's map of
+// it with every hole but the longest border filled by CGAL's hole filling, the fillers kept as
+// guards through the polish (the holes stay open and nothing enters them), so that a chart
+// grown around a hole needs no seam to it. False if the chart has no slit, or the closed chart
+// is not a surface of genus 0 with a boundary, or LSCM's map of it is no bijection.
+inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings)
+{
+  if(chart.slits.empty())
+    return false;
+  // the chart vertices on the two sides of a slit made one
+  std::unordered_map<int, std::size_t> local; // input triangle -> chart triangle
+  for(std::size_t i = 0; i < chart.triangles.size(); ++i)
+    local.emplace(int(chart.triangles[i]), i);
+  auto vertex = [&](int corner) {
+    return chart.corner_vertex[3 * local.at(corner / 3) + std::size_t(corner % 3)];
+  };
+  auto next = [](int corner) { return 3 * (corner / 3) + (corner % 3 + 1) % 3; };
+  const std::size_t nv = chart.flat.xyz.size();
+  std::vector<int> parent(nv);
+  for(std::size_t v = 0; v < nv; ++v) parent[v] = int(v);
+  auto find = [&parent](int v) {
+    while(parent[std::size_t(v)] != v) v = parent[std::size_t(v)] = parent[std::size_t(parent[std::size_t(v)])];
+    return v;
+  };
+  for(const auto& slit : chart.slits) { // side a goes from corner a to next(a), its mate b the other way
+    parent[std::size_t(find(vertex(slit.first)))] = find(vertex(next(slit.second)));
+    parent[std::size_t(find(vertex(next(slit.first))))] = find(vertex(slit.second));
+  }
+  std::vector<int> merged(nv, -1);
+  Flat_triangles closed;
+  for(std::size_t v = 0; v < nv; ++v) {
+    const std::size_t r = std::size_t(find(int(v)));
+    if(merged[r] < 0) {
+      merged[r] = int(closed.xyz.size());
+      closed.xyz.push_back(chart.flat.xyz[r]);
+    }
+    merged[v] = merged[r];
+  }
+  for(const Triangle& t : chart.flat.tri) {
+    closed.tri.push_back({merged[std::size_t(t[0])], merged[std::size_t(t[1])], merged[std::size_t(t[2])]});
+    const Triangle& c = closed.tri.back();
+    if(c[0] == c[1] || c[1] == c[2] || c[2] == c[0]) // a triangle closed onto itself
+      return false;
+  }
+  Chart_mesh sm;
+  if(!make_chart_mesh(closed, sm))
+    return false;
+  std::vector<Chart_halfedge> loops;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
+  const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
+  if(loops.empty() || euler != 2 - long(loops.size()))
+    return false;
+  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  for(Chart_halfedge h : loops) {
+    bool outer = false;
+    for(Chart_halfedge b : halfedges_around_face(h, sm))
+      outer = outer || b == bhd;
+    std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
+    // the search by Delaunay triangulations only: the exhaustive one is cubic in the hole's size
+    if(!outer && (CGAL::Polygon_mesh_processing::triangulate_hole(sm, h, std::back_inserter(filler),
+                    CGAL::parameters::use_2d_constrained_delaunay_triangulation(true).do_not_use_cubic_algorithm(true)),
+                  filler.empty()))
+      return false;
+  }
+  std::vector<Triangle> guard;
+  for(auto f : faces(sm))
+    if(std::size_t(f) >= closed.tri.size()) {
+      Triangle t;
+      int k = 0;
+      for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
+        t[std::size_t(k++)] = int(v);
+      guard.push_back(t);
+    }
+  std::vector<Vec2> uv;
+  if(!flatten_from_conformal(sm, bhd, closed, guard, settings.polish_iterations, uv))
+    return false;
+  chart.uv.resize(nv);
+  for(std::size_t v = 0; v < nv; ++v)
+    chart.uv[v] = uv[std::size_t(merged[v])];
+  measure_chart(chart);
+  chart.slits_closed = chart.ok;
+  return chart.ok;
+}
+
 // Flattens the chart, whose vertices are made (`make_chart_vertices()`): from LSCM's map if it
 // is a bijection and ends at most `max_stretch`, else the lower of the two maps. On failure
 // `chart.ok` is false and the caller splits the chart. Charts can be flattened on several
@@ -243,43 +362,61 @@ inline void measure_chart(Chart_map& chart)
 inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings)
 {
   chart.ok = false;
+  chart.slits_closed = false;
   if(chart.triangles.size() == 1) {
     layout_single_triangle(chart);
     measure_chart(chart);
     return;
   }
+  // the lowest map so far: a map above the bound is kept if no other map is lower
+  std::vector<Vec2> best_uv;
+  double best_l2 = HUGE_VAL;
+  bool best_closed = false;
+  auto keep = [&]() {
+    if(!chart.ok || !(chart.l2 < best_l2)) return;
+    best_uv = chart.uv;
+    best_l2 = chart.l2;
+    best_closed = chart.slits_closed;
+  };
+  auto done = [&]() {
+    if(!std::isfinite(best_l2)) return false;
+    chart.uv.swap(best_uv);
+    chart.l2 = best_l2;
+    chart.slits_closed = best_closed;
+    chart.ok = true;
+    return best_l2 <= settings.max_stretch;
+  };
+  if(flatten_with_holes(chart, settings)) {
+    keep();
+    if(done())
+      return;
+  }
+  chart.ok = false;
+  chart.slits_closed = false;
   Chart_mesh sm;
-  std::vector<Chart_vertex> vd;
-  vd.reserve(chart.flat.xyz.size());
-  for(const Vec3& p : chart.flat.xyz)
-    vd.push_back(sm.add_vertex(Chart_kernel::Point_3(p[0], p[1], p[2])));
-  for(const Triangle& t : chart.flat.tri)
-    if(sm.add_face(vd[std::size_t(t[0])], vd[std::size_t(t[1])], vd[std::size_t(t[2])]) == Chart_mesh::null_face())
-      return;
-  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
-  if(bhd == boost::graph_traits<Chart_mesh>::null_halfedge())
+  if(!make_chart_mesh(chart.flat, sm)) {
+    done();
     return;
-  // LSCM's map, kept if it is above the bound but below the other one
-  std::vector<Vec2> conformal_uv;
-  double conformal_l2 = HUGE_VAL;
-  if(flatten_from_conformal(sm, bhd, chart.flat, settings.polish_iterations, chart.uv)) {
+  }
+  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  if(bhd == boost::graph_traits<Chart_mesh>::null_halfedge()) {
+    done();
+    return;
+  }
+  if(flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
-    if(chart.ok && chart.l2 <= settings.max_stretch)
+    keep();
+    if(chart.ok && chart.l2 <= settings.max_stretch) {
+      done();
       return;
-    if(chart.ok) {
-      conformal_uv.swap(chart.uv);
-      conformal_l2 = chart.l2;
     }
   }
   chart.ok = false;
-  chart.l2 = HUGE_VAL;
-  if(flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv))
+  if(flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
-  if(std::isfinite(conformal_l2) && !(chart.ok && chart.l2 <= conformal_l2)) {
-    chart.uv.swap(conformal_uv);
-    chart.l2 = conformal_l2;
-    chart.ok = true;
+    keep();
   }
+  done();
 }
 
 CGAL_SMP_END_SOLVER_NAMESPACE

@@ -318,8 +318,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       });
       r.seconds_parameterization += seconds_since(t1);
       flattened += end - begin;
-      for(std::size_t c = begin; c < end; ++c)
+      for(std::size_t c = begin; c < end; ++c) {
+        if(charts[c].ok && charts[c].slits_closed && charts[c].l2 <= settings.max_stretch)
+          for(const auto& slit : charts[c].slits)
+            g.close_slit(slit.first); // no seam there
         cut_if_needed(c);
+      }
       if(visit)
         settings.tell(Atlas_stage::FLATTENING, flattened, flattened + charts.size() - end);
     }
