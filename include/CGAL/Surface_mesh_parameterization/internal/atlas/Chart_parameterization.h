@@ -355,10 +355,10 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
   return chart.ok;
 }
 
-// Flattens the chart, whose vertices are made (`make_chart_vertices()`): from LSCM's map if it
-// is a bijection and ends at most `max_stretch`, else the lower of the two maps. On failure
-// `chart.ok` is false and the caller splits the chart. Charts can be flattened on several
-// threads at once.
+// Flattens the chart, whose vertices are made (`make_chart_vertices()`): the first map that
+// ends at most `max_stretch` of, in turn, the chart with its slits closed, LSCM's map of a chart
+// without slits, and this package's; else the lowest of them. On failure `chart.ok` is false
+// and the caller splits the chart. Charts can be flattened on several threads at once.
 inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings)
 {
   chart.ok = false;
@@ -368,7 +368,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     measure_chart(chart);
     return;
   }
-  // the lowest map so far: a map above the bound is kept if no other map is lower
+  // a map within the bound is taken at once; of maps above it, the lowest is kept
   std::vector<Vec2> best_uv;
   double best_l2 = HUGE_VAL;
   bool best_closed = false;
@@ -378,45 +378,43 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     best_l2 = chart.l2;
     best_closed = chart.slits_closed;
   };
-  auto done = [&]() {
-    if(!std::isfinite(best_l2)) return false;
-    chart.uv.swap(best_uv);
+  auto take_best = [&]() {
+    chart.ok = std::isfinite(best_l2);
     chart.l2 = best_l2;
+    if(!chart.ok) return;
+    chart.uv.swap(best_uv);
     chart.slits_closed = best_closed;
-    chart.ok = true;
-    return best_l2 <= settings.max_stretch;
   };
   if(flatten_with_holes(chart, settings)) {
-    keep();
-    if(done())
+    if(chart.l2 <= settings.max_stretch)
       return;
+    keep();
   }
   chart.ok = false;
   chart.slits_closed = false;
   Chart_mesh sm;
-  if(!make_chart_mesh(chart.flat, sm)) {
-    done();
-    return;
-  }
-  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  const bool mesh = make_chart_mesh(chart.flat, sm);
+  const Chart_halfedge bhd = mesh ? CGAL::Polygon_mesh_processing::longest_border(sm).first
+                                  : boost::graph_traits<Chart_mesh>::null_halfedge();
   if(bhd == boost::graph_traits<Chart_mesh>::null_halfedge()) {
-    done();
+    take_best();
     return;
   }
-  if(flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings.polish_iterations, chart.uv)) {
+  // LSCM maps the two sides of a slit about onto each other, so its map of a chart with slits
+  // is no bijection: that chart has had its LSCM start, with the slits closed
+  if(chart.slits.empty() &&
+     flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
-    keep();
-    if(chart.ok && chart.l2 <= settings.max_stretch) {
-      done();
+    if(chart.ok && chart.l2 <= settings.max_stretch)
       return;
-    }
+    keep();
   }
   chart.ok = false;
   if(flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
     keep();
   }
-  done();
+  take_best();
 }
 
 CGAL_SMP_END_SOLVER_NAMESPACE
