@@ -275,9 +275,12 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
 // it with every hole but the longest border filled by CGAL's hole filling, the fillers kept as
 // guards through the polish (the holes stay open and nothing enters them), so that a chart
 // grown around a hole needs no seam to it. False if the chart has no slit, or the closed chart
-// is not a surface of genus 0 with a boundary, or LSCM's map of it is no bijection.
-inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings)
+// is not a surface of genus 0 with holes, or LSCM's map of it is no bijection; `holes` tells
+// whether it is one (a slit closed without a hole is the cut of a cone, which the other starts
+// open).
+inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes)
 {
+  holes = false;
   if(chart.slits.empty())
     return false;
   // the chart vertices on the two sides of a slit made one
@@ -321,8 +324,9 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
   std::vector<Chart_halfedge> loops;
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
   const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
-  if(loops.empty() || euler != 2 - long(loops.size()))
+  if(loops.size() < 2 || euler != 2 - long(loops.size()))
     return false;
+  holes = true;
   const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
   for(Chart_halfedge h : loops) {
     bool outer = false;
@@ -385,7 +389,8 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     chart.uv.swap(best_uv);
     chart.slits_closed = best_closed;
   };
-  if(flatten_with_holes(chart, settings)) {
+  bool holes = false;
+  if(flatten_with_holes(chart, settings, holes)) {
     if(chart.l2 <= settings.max_stretch)
       return;
     keep();
@@ -400,9 +405,9 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     take_best();
     return;
   }
-  // LSCM maps the two sides of a slit about onto each other, so its map of a chart with slits
-  // is no bijection: that chart has had its LSCM start, with the slits closed
-  if(chart.slits.empty() &&
+  // LSCM maps the two sides of a slit to a hole about onto each other, so its map of such a
+  // chart is no bijection: that chart has had its LSCM start, with the slits closed
+  if(!holes &&
      flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
     if(chart.ok && chart.l2 <= settings.max_stretch)
