@@ -503,6 +503,21 @@ void packing_rounding()
             "the quad with a far corner: " << a.report.message << ", " << a.report.flipped_faces << " flipped");
 }
 
+// Found by the fuzz harness: a point 2e87 units away makes a needle whose shortest side is
+// about 1e-87 of its others, a chart alone. It was laid out on that side, with a height far
+// above it, and the packing rounded that side, and the area, away: a flipped face, on every
+// pass. Flat is now judged by the least height.
+void needle_alone()
+{
+  const std::vector<Point> points = {Point(-0.5, -2, -0.5), Point(-1.5, 0.25, 1e-300), Point(1.5, -1.75, 0.5), Point(0, -1.25, -0.5), Point(1e-300, 1.25, 1.25), Point(-1.5, 4.9406564584124654e-324, 1e-300), Point(-1.75, 1e-300, -1), Point(0.5, -1, 1.75), Point(-0.75, 0.25, -1.75), Point(-1.75, -1.75, -2), Point(-2, 0.25, 2.2379545638440394e+87), Point(0.25, 1.25, 1.5), Point(1e-300, -0.75, 1000000000), Point(-1, 1, 1.25)};
+  const std::vector<Polygon> polygons = {{11, 0, 7, 1, 3, 8}, {10, 3, 4}, {8, 3, 12}, {}, {3, 11, 6, 11}, {10, 10, 3}, {1, 6, 13}, {12, 11, 4, 9, 4, 7}, {}, {12, 9, 2}, {5, 11, 1, 10}, {4, 6, 12}, {10, 9, 3}, {12, 11, 13}, {10, 1, 3}, {4, 2, 10}, {13, 8, 12}, {7, 0, 2}, {1, 9, 10}, {4, 13, 9, 8, 8}, {13, 12, 1}, {0, 1, 3}, {12, 0, 8}, {8, 2, 8, 5}, {3, 0, 6}, {3}, {12, 11}};
+  namespace P = SMP::parameters;
+  const SMP::Atlas a = SMP::make_atlas(points, polygons, P::max_stretch(1.0056862745098039).resolution(33u)
+                                       .gutter(0.).polish_iterations(0u).number_of_threads(1u));
+  SMP_CHECK(a.report.status == SMP::OK && a.report.flipped_faces == 0,
+            "needle alone: " << a.report.message << ", " << a.report.flipped_faces << " flipped");
+}
+
 // A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
 // `turn` of its circumference (a whole turn: an open tube, no disk).
 SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
@@ -844,6 +859,7 @@ int main(int argc, char** argv)
   chart_of_two_pieces();
   chart_orientation();
   packing_rounding();
+  needle_alone();
   chart_starts();
   interior_fold_repair();
   holes_without_seams();

@@ -102,7 +102,9 @@ inline void make_chart_vertices(const Atlas_triangles& m, Chart_growing& g, Char
 }
 
 // The chart's triangle laid out with its 3D shape; a flat one gets a thin positive triangle
-// instead (it has no 3D area, so it carries no stretch).
+// instead (it has no 3D area to speak of, so it carries no stretch). Flat means a least height
+// below a millionth of the longest side: a needle laid out on its shortest side would have a
+// height far above that side, and the packing would round that side, and the area, away.
 inline void layout_single_triangle(Chart_map& chart)
 {
   // in the order of the triangle's corners (the input's orientation), whatever the order of
@@ -116,7 +118,7 @@ inline void layout_single_triangle(Chart_map& chart)
   double y = a > 0. ? norm3(cross3(sub3(q, p), e)) / a : 0.;
   const double size = (std::max)({a, norm3(e), norm3(sub3(r, q)), 1e-300});
   std::array<Vec2, 3> corner = {Vec2{0., 0.}, Vec2{a > 0. ? a : size, 0.}, Vec2{x, y}};
-  if(!(y > 1e-6 * size) || !std::isfinite(x) || !std::isfinite(size)) { // no 3D area: any thin positive triangle
+  if(!((a / size) * y > 1e-6 * size) || !std::isfinite(x) || !std::isfinite(size)) { // any thin positive triangle
     const double side = std::isfinite(size) ? size : 1.;
     corner = {Vec2{0., 0.}, Vec2{side, 0.}, Vec2{0.5 * side, 1e-3 * side}};
   }
