@@ -245,8 +245,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // narrower cone, or, if it is one polygon, split into its triangles laid out alone
   std::vector<Chart_areas> areas; // per chart, measured once it is flattened
   auto cut_if_needed = [&](std::size_t c) {
-    if(charts[c].ok && charts[c].l2 <= settings.max_stretch)
+    if(charts[c].ok && charts[c].l2 <= settings.max_stretch) { // kept
+      if(charts[c].slits_closed) // its map glues its slits: no seam there
+        for(const auto& slit : charts[c].slits)
+          g.close_slit(slit.first);
       return;
+    }
     const std::vector<std::size_t> triangles = charts[c].triangles;
     const std::size_t units = units_of(triangles);
     if(units < 2) {
@@ -318,12 +322,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       });
       r.seconds_parameterization += seconds_since(t1);
       flattened += end - begin;
-      for(std::size_t c = begin; c < end; ++c) {
-        if(charts[c].ok && charts[c].slits_closed && charts[c].l2 <= settings.max_stretch)
-          for(const auto& slit : charts[c].slits)
-            g.close_slit(slit.first); // no seam there
+      for(std::size_t c = begin; c < end; ++c)
         cut_if_needed(c);
-      }
       if(visit)
         settings.tell(Atlas_stage::FLATTENING, flattened, flattened + charts.size() - end);
     }
