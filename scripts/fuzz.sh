@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer harness (clang-14, ASan + UBSan) in build/fuzz and runs it for SECONDS
-# (default 120; CI runs it briefly, developers for hours: `bash scripts/fuzz.sh 3600`), on
-# JOBS processes (default 1), with the random seed SEED (default 0: a new one each run; one job
-# from a given seed and an empty build/fuzz/corpus repeats a run, CI's included). Inputs to
+# (default 120; developers run it for hours: `bash scripts/fuzz.sh 3600`), on JOBS processes
+# (default 1), with the random seed SEED (default 0: a new one each run), for at most RUNS
+# inputs (default 0: no bound). With RUNS, one job starts from an empty corpus of its own, so
+# that a seed and a count make one run, whatever the machine's speed: CI runs
+# `bash scripts/fuzz.sh 900 1 SEED RUNS`, and the same command repeats it here. Inputs to
 # start from: the small bundled meshes and test/.../fuzz/seeds, made into inputs of each target
 # (fuzz_smp.cpp: the first byte chooses the target), and the inputs of earlier findings as they
-# were (test/.../fuzz/regressions), run first every time. The corpus grows in build/fuzz/corpus
-# across runs. A finding is written to build/fuzz/findings/ and fails the script, which prints
+# were (test/.../fuzz/regressions), run first every time. Without RUNS the corpus grows in
+# build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and fails the script, which prints
 # it in base64: reproduce it with
 # `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
 set -euo pipefail
@@ -14,6 +16,7 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-120}
 jobs=${2:-1}
 seed=${3:-0} # 0: libFuzzer draws one; CI gives one, so that its run can be repeated here
+runs=${4:-0}
 
 bash scripts/install-deps.sh clang-14 libclang-rt-14-dev
 
@@ -22,7 +25,12 @@ cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++
 cmake --build build/fuzz -j2 --target fuzz_smp
 
 seeds=build/fuzz/seeds
-mkdir -p "$seeds" build/fuzz/corpus build/fuzz/findings
+corpus=build/fuzz/corpus
+if [ "$runs" -gt 0 ]; then
+  corpus=build/fuzz/corpus-counted
+  rm -rf "$corpus"
+fi
+mkdir -p "$seeds" "$corpus" build/fuzz/findings
 prefix() { printf "\\x$(printf %02x "$1")\\x$(printf %02x "$2")"; }
 for f in test/Stretch_minimizing_parameterization/fuzz/seeds/* \
          examples/Stretch_minimizing_parameterization/data/{nefertiti,pig}.off; do
@@ -38,12 +46,14 @@ done
 
 parallel=()
 [ "$jobs" -gt 1 ] && parallel=(-jobs="$jobs" -workers="$jobs")
+counted=()
+[ "$runs" -gt 0 ] && counted=(-runs="$runs")
 # allocator_may_return_null: an allocation too large throws std::bad_alloc, as without ASan
 status=0
 touch build/fuzz/run-started
 ASAN_OPTIONS=allocator_may_return_null=1:detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp build/fuzz/corpus "$seeds" test/Stretch_minimizing_parameterization/fuzz/regressions -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
-  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 -seed="$seed" "${parallel[@]}" || status=$?
+  build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp "$corpus" "$seeds" test/Stretch_minimizing_parameterization/fuzz/regressions -max_total_time="$seconds" -timeout=30 -rss_limit_mb=4096 \
+  -max_len=65536 -artifact_prefix=build/fuzz/findings/ -print_final_stats=1 -seed="$seed" "${parallel[@]}" "${counted[@]}" || status=$?
 # a finding is printed last, so that a run on a machine that is gone (CI) can be reproduced:
 # `base64 -d > FILE` of the line
 if [ "$status" -ne 0 ]; then

@@ -518,6 +518,35 @@ void needle_alone()
             "needle alone: " << a.report.message << ", " << a.report.flipped_faces << " flipped");
 }
 
+// Found by the fuzz harness: needles (long charts of almost no surface area) too many for a
+// small texture. No scale fits them, and the packing stacks them one a row, at a scale taken
+// from the surface area, where a needle is far longer than the texture (1e29 cells, beyond a
+// long, cut to the square's side). They are now stacked at a scale where the longest spans
+// the texture: each needle whole, in a band of its own.
+void needles_stacked()
+{
+  namespace I = SMP::internal;
+  const std::size_t n = 24;
+  std::vector<std::vector<I::Vec2> > uv(n, std::vector<I::Vec2>{{0., 0.}, {2.6, 0.}, {1.3, 1e-88}});
+  const std::vector<std::vector<I::Triangle> > tri(n, std::vector<I::Triangle>{{0, 1, 2}});
+  const std::vector<double> area_uv(n, 1.3e-88), area_3d(n, 1.3e-88);
+  I::Packing_settings settings;
+  settings.resolution = 17u;
+  settings.gutter = 3.;
+  settings.threads = 1u;
+  const I::Packing_result r = I::pack_charts(uv, tri, area_uv, area_3d, settings);
+  SMP_CHECK(std::isfinite(r.scale) && r.scale > 0., "needles stacked: scale " << r.scale);
+  std::vector<std::pair<double, double> > bands; // each needle's extent in v
+  for(std::size_t c = 0; c < n; ++c) {
+    const I::Vec2 &a = uv[c][0], &b = uv[c][1];
+    SMP_CHECK(a[0] > 0. && b[0] > a[0] && b[0] < 1., "needles stacked: needle " << c << " from u = " << a[0] << " to " << b[0]);
+    bands.emplace_back((std::min)(a[1], b[1]), (std::max)(a[1], b[1]));
+  }
+  std::sort(bands.begin(), bands.end());
+  for(std::size_t c = 1; c < n; ++c)
+    SMP_CHECK(bands[c - 1].second < bands[c].first, "needles stacked: two needles share a band");
+}
+
 // A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
 // `turn` of its circumference (a whole turn: an open tube, no disk).
 SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
@@ -860,6 +889,7 @@ int main(int argc, char** argv)
   chart_orientation();
   packing_rounding();
   needle_alone();
+  needles_stacked();
   chart_starts();
   interior_fold_repair();
   holes_without_seams();

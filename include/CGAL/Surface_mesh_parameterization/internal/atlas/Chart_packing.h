@@ -494,8 +494,11 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   const double start = coarse.scale > 0. ? coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
   Packing_layout best;
   if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, best, settings.threads)) {
-    // could not fit at any tried scale: one chart per row of a larger square
-    best.scale = start;
+    // could not fit at any tried scale: one chart per row of a larger square, at a scale where
+    // the longest chart spans the texture at most (the start's estimate from the surface area
+    // is unbounded for needles, whose extent is not in proportion to their area)
+    const double fit = double((std::max)(cells - 2 * pad - 2, 1L)) / in.longest;
+    best.scale = in.longest > 0. ? (std::min)(start, fit) : 1.;
     best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0);
     long row = 0, widest = 0;
     for(std::size_t c = 0; c < n; ++c) {
