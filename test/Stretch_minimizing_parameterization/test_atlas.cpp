@@ -547,6 +547,33 @@ void needles_stacked()
     SMP_CHECK(bands[c - 1].second < bands[c].first, "needles stacked: two needles share a band");
 }
 
+// A square frame (a chart with a hole) and a square a little larger in area that fits in its
+// hole: placed by area, the square comes first and the frame beside it (a third of the square
+// filled); the frame placed first holds the square (over three quarters filled).
+void packing_frame_first()
+{
+  namespace I = SMP::internal;
+  const std::vector<I::Vec2> frame = {{0., 0.}, {10., 0.}, {10., 10.}, {0., 10.}, {1., 1.}, {9., 1.}, {9., 9.}, {1., 9.}};
+  const std::vector<I::Triangle> frame_tri = {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5}, {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+  const std::vector<I::Vec2> square = {{0., 0.}, {6.5, 0.}, {6.5, 6.5}, {0., 6.5}};
+  const std::vector<I::Triangle> square_tri = {{0, 1, 2}, {0, 2, 3}};
+  std::vector<std::vector<I::Vec2> > uv = {frame, square};
+  const std::vector<std::vector<I::Triangle> > tri = {frame_tri, square_tri};
+  const std::vector<double> area = {36., 6.5 * 6.5};
+  I::Packing_settings settings;
+  settings.resolution = 256u;
+  settings.threads = 1u;
+  const I::Packing_result r = I::pack_charts(uv, tri, area, area, settings);
+  SMP_CHECK(r.utilization > 0.75, "frame first: utilization " << r.utilization);
+  I::Vec2 low = {1., 1.}, high = {0., 0.};
+  for(const I::Vec2& q : uv[1])
+    for(int i = 0; i < 2; ++i) { low[i] = (std::min)(low[i], q[i]); high[i] = (std::max)(high[i], q[i]); }
+  bool inside = true; // the square in the frame's hole
+  for(int i = 0; i < 2; ++i)
+    inside = inside && low[i] > (std::min)(uv[0][4][i], uv[0][6][i]) && high[i] < (std::max)(uv[0][4][i], uv[0][6][i]);
+  SMP_CHECK(inside, "frame first: the square is not in the frame's hole");
+}
+
 // A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
 // `turn` of its circumference (a whole turn: an open tube, no disk).
 SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
@@ -890,6 +917,7 @@ int main(int argc, char** argv)
   packing_rounding();
   needle_alone();
   needles_stacked();
+  packing_frame_first();
   chart_starts();
   interior_fold_repair();
   holes_without_seams();

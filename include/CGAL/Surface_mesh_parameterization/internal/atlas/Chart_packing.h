@@ -317,18 +317,18 @@ private:
   std::vector<long> free_run_;
 };
 
-// Places the charts, largest first, each in the quarter turn and at the place that keeps the
-// square holding them all smallest: inside the square so far where the chart's top rests
-// lowest, else where the square grows least. Returns the side of the square, -1 if it would
-// exceed `limit` cells.
-inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, const std::vector<double>& area,
+// Places the charts, the largest `size` first, each in the quarter turn and at the place that
+// keeps the square holding them all smallest: inside the square so far where the chart's top
+// rests lowest, else where the square grows least. Returns the side of the square, -1 if it
+// would exceed `limit` cells.
+inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, const std::vector<double>& size,
                          long limit, std::vector<long>& at_x, std::vector<long>& at_y, std::vector<int>& turn)
 {
   const std::size_t n = masks.size();
   std::vector<std::size_t> order(n);
   for(std::size_t i = 0; i < n; ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&area](std::size_t a, std::size_t b) {
-    return area[a] != area[b] ? area[a] > area[b] : a < b;
+  std::sort(order.begin(), order.end(), [&size](std::size_t a, std::size_t b) {
+    return size[a] != size[b] ? size[a] > size[b] : a < b;
   });
   Occupancy occupancy(limit);
   at_x.assign(n, 0); at_y.assign(n, 0); turn.assign(n, 0);
@@ -417,20 +417,29 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
   return in;
 }
 
+// The order in which charts are placed: by their area, or by the geometric mean of their area
+// and their bounding box's (a ring, a crescent or a long strip then comes before a compact
+// chart of its area: it is hardest to fit late, and smaller charts fill the room it leaves).
+enum class Packing_order { AREA, AREA_AND_BOX };
+
 // The layout at the largest scale found (in at most `tries` packings, from `scale` on) whose
 // square fits `cells` cells, each chart widened by `pad` cells; false if none fits.
 inline bool search_layout(const Packing_input& in, long cells, long pad, double scale, int tries, Packing_layout& best,
-                          unsigned int threads = 1)
+                          unsigned int threads = 1, Packing_order by = Packing_order::AREA)
 {
   const std::size_t n = in.area.size();
   Packing_layout trial;
+  std::vector<double> size = in.area;
   const auto pack = [&](double at) { // the side of the square at scale `at`, -1 beyond the texture
     std::vector<std::array<Chart_mask, 4> > masks(n);
     parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
       for(std::size_t k = 0; k < 4; ++k)
         masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], at, pad);
     });
-    trial.side = place_charts(masks, in.area, cells, trial.x, trial.y, trial.turn);
+    if(by == Packing_order::AREA_AND_BOX)
+      for(std::size_t c = 0; c < n; ++c)
+        size[c] = std::sqrt(in.area[c] * double(masks[c][0].width) * double(masks[c][0].height()));
+    trial.side = place_charts(masks, size, cells, trial.x, trial.y, trial.turn);
     trial.scale = at;
     if(trial.side > 0 && at > best.scale)
       best = trial;
@@ -456,6 +465,28 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   return best.scale > 0.;
 }
 
+// The utilization of `layout`: the charts' area over the square's.
+inline double layout_utilization(const Packing_input& in, const Packing_layout& layout)
+{
+  return in.charts_area * layout.scale * layout.scale / (double(layout.side) * double(layout.side));
+}
+
+// search_layout() with the charts by area, and, if that fills the square below `goal`, by area
+// and box too: the layout that fills it better.
+inline bool search_layouts(const Packing_input& in, long cells, long pad, double scale, int tries, double goal,
+                           Packing_layout& best, unsigned int threads)
+{
+  if(!search_layout(in, cells, pad, scale, tries, best, threads))
+    return false;
+  if(layout_utilization(in, best) >= goal)
+    return true;
+  Packing_layout other;
+  if(search_layout(in, cells, pad, best.scale, tries, other, threads, Packing_order::AREA_AND_BOX) &&
+     layout_utilization(in, other) > layout_utilization(in, best))
+    best = std::move(other);
+  return true;
+}
+
 // The utilization of a coarse layout (`settings.coarse_resolution` cells a side, the gutter in
 // proportion), and its scale in cells of the full resolution: cheap, for deciding whether to
 // cut charts further, and where the full search starts.
@@ -469,9 +500,9 @@ inline Packing_result estimate_packing(const Packing_input& in, const Packing_se
   const long pad = std::lround(0.5 * settings.gutter * ratio);
   const double start = scale_hint > 0. ? scale_hint * ratio : double(coarse) * std::sqrt(0.6 / in.total_3d);
   Packing_layout layout;
-  if(!search_layout(in, coarse, pad, start, 10, layout, settings.threads)) return r;
+  if(!search_layouts(in, coarse, pad, start, 10, settings.goal, layout, settings.threads)) return r;
   r.scale = layout.scale / ratio * double(coarse) / double(layout.side);
-  r.utilization = in.charts_area * layout.scale * layout.scale / (double(layout.side) * double(layout.side));
+  r.utilization = layout_utilization(in, layout);
   r.side = double(layout.side) / layout.scale;
   return r;
 }
@@ -493,7 +524,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   const Packing_result coarse = estimate_packing(in, settings, scale_hint);
   const double start = coarse.scale > 0. ? coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
   Packing_layout best;
-  if(!search_layout(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, best, settings.threads)) {
+  if(!search_layouts(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, settings.goal, best, settings.threads)) {
     // could not fit at any tried scale: one chart per row of a larger square, at a scale where
     // the longest chart spans the texture at most (the start's estimate from the surface area
     // is unbounded for needles, whose extent is not in proportion to their area)
