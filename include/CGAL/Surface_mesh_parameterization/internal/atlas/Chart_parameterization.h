@@ -20,13 +20,13 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/hole_filling_compatibility.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
@@ -335,10 +335,7 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
     for(Chart_halfedge b : halfedges_around_face(h, sm))
       outer = outer || b == bhd;
     std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
-    // the search by Delaunay triangulations only: the exhaustive one is cubic in the hole's size
-    if(!outer && (CGAL::Polygon_mesh_processing::triangulate_hole(sm, h, std::back_inserter(filler),
-                    CGAL::parameters::use_2d_constrained_delaunay_triangulation(true).do_not_use_cubic_algorithm(true)),
-                  filler.empty()))
+    if(!outer && (fill_hole_by_delaunay(sm, h, std::back_inserter(filler)), filler.empty()))
       return false;
   }
   std::vector<Triangle> guard;
