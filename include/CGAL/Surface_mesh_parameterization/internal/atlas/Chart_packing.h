@@ -472,7 +472,8 @@ inline double layout_utilization(const Packing_input& in, const Packing_layout& 
 }
 
 // search_layout() with the charts by area, and, if that fills the square below `goal`, by area
-// and box too: the layout that fills it better.
+// and box too: the layout that fills it better. (Final packings only: the coarse estimates
+// are many, and a second order would cost them as much again.)
 inline bool search_layouts(const Packing_input& in, long cells, long pad, double scale, int tries, double goal,
                            Packing_layout& best, unsigned int threads)
 {
@@ -500,7 +501,7 @@ inline Packing_result estimate_packing(const Packing_input& in, const Packing_se
   const long pad = std::lround(0.5 * settings.gutter * ratio);
   const double start = scale_hint > 0. ? scale_hint * ratio : double(coarse) * std::sqrt(0.6 / in.total_3d);
   Packing_layout layout;
-  if(!search_layouts(in, coarse, pad, start, 10, settings.goal, layout, settings.threads)) return r;
+  if(!search_layout(in, coarse, pad, start, 10, layout, settings.threads)) return r;
   r.scale = layout.scale / ratio * double(coarse) / double(layout.side);
   r.utilization = layout_utilization(in, layout);
   r.side = double(layout.side) / layout.scale;
