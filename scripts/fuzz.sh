@@ -2,9 +2,10 @@
 # Builds the libFuzzer harness (clang-14, ASan + UBSan) in build/fuzz and runs it for SECONDS
 # (default 120; developers run it for hours: `bash scripts/fuzz.sh 3600`), on JOBS processes
 # (default 1), with the random seed SEED (default 0: a new one each run), for at most RUNS
-# inputs (default 0: no bound). With RUNS, one job starts from an empty corpus of its own, so
-# that a seed and a count make one run, whatever the machine's speed: CI runs
-# `bash scripts/fuzz.sh 900 1 SEED RUNS`, and the same command repeats it here. Inputs to
+# inputs (default 0: no bound). With RUNS, one job starts from an empty corpus of its own: CI
+# runs `bash scripts/fuzz.sh 900 1 SEED RUNS`, the same amount of fuzzing on a slow machine as
+# on a fast one. (Not the same inputs: the coverage that steers the mutations varies from run
+# to run, so a finding is printed, below.) Inputs to
 # start from: the small bundled meshes and test/.../fuzz/seeds, made into inputs of each target
 # (fuzz_smp.cpp: the first byte chooses the target), and the inputs of earlier findings as they
 # were (test/.../fuzz/regressions), run first every time. Without RUNS the corpus grows in
