@@ -9,14 +9,14 @@
 # start from: the small bundled meshes and test/.../fuzz/seeds, made into inputs of each target
 # (fuzz_smp.cpp: the first byte chooses the target), and the inputs of earlier findings as they
 # were (test/.../fuzz/regressions), run first every time. Without RUNS the corpus grows in
-# build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and fails the script, which prints
-# it in base64: reproduce it with
+# build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and fails the
+# script, which prints it in base64: reproduce it with
 # `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 seconds=${1:-120}
 jobs=${2:-1}
-seed=${3:-0} # 0: libFuzzer draws one; CI gives one, so that its run can be repeated here
+seed=${3:-0} # 0: libFuzzer draws one
 runs=${4:-0}
 
 bash scripts/install-deps.sh clang-14 libclang-rt-14-dev
