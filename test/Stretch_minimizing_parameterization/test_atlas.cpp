@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <limits>
@@ -574,6 +575,84 @@ void packing_frame_first()
   SMP_CHECK(inside, "frame first: the square is not in the frame's hole");
 }
 
+// The packing's cell bitmap against a plain grid of booleans: random spans (across word
+// boundaries too) set, widened by d cells right and up, read back as runs.
+void cell_bitmap()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(11);
+  for(int trial = 0; trial < 200; ++trial) {
+    const long rows = 1 + long(random() % 40), columns = 1 + long(random() % 300), d = long(random() % 80);
+    I::Cell_bitmap bitmap(rows, columns);
+    std::vector<std::vector<char> > grid(std::size_t(rows), std::vector<char>(std::size_t(columns), 0));
+    for(int k = 0; k < 30; ++k) {
+      const long r = long(random() % std::uint32_t(rows)), a = long(random() % std::uint32_t(columns));
+      const long b = (std::min)(columns - 1, a + long(random() % 150));
+      bitmap.set(r, a, b);
+      for(long c = a; c <= b; ++c) grid[std::size_t(r)][std::size_t(c)] = 1;
+    }
+    bitmap.dilate(d);
+    std::vector<std::vector<char> > wide(grid.size(), std::vector<char>(std::size_t(columns), 0));
+    for(long r = 0; r < rows; ++r)
+      for(long c = 0; c < columns; ++c)
+        for(long i = 0; i <= d && i <= r; ++i)
+          for(long j = 0; j <= d && j <= c; ++j)
+            wide[std::size_t(r)][std::size_t(c)] |= grid[std::size_t(r - i)][std::size_t(c - j)];
+    std::vector<std::pair<long, long> > runs, expected;
+    for(long r = 0; r < rows; ++r) {
+      bitmap.runs(r, runs);
+      expected.clear();
+      for(long c = 0; c < columns; ++c)
+        if(wide[std::size_t(r)][std::size_t(c)]) {
+          if(!expected.empty() && expected.back().second == c) ++expected.back().second;
+          else expected.emplace_back(c, c + 1);
+        }
+      SMP_CHECK(runs == expected, "cell bitmap, trial " << trial << ", row " << r << ": " << runs.size() << " runs, "
+                << expected.size() << " expected");
+    }
+  }
+}
+
+// A chart's mask holds the cells of every point of its triangles, widened by the pad.
+void chart_mask_covers()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  for(int trial = 0; trial < 50; ++trial) {
+    std::vector<I::Vec2> uv;
+    std::vector<I::Triangle> tri;
+    for(int t = 0; t < 20; ++t) {
+      const double x = 60. * unit(random), y = 30. * unit(random), r = trial % 2 ? 0.3 : 8.;
+      const int b = int(uv.size());
+      for(int k = 0; k < 3; ++k) uv.push_back({x + r * unit(random), y + r * unit(random)});
+      tri.push_back({b, b + 1, b + 2});
+    }
+    const double scale = 0.5 + 2. * unit(random);
+    const long pad = trial % 3;
+    const I::Chart_mask m = I::chart_mask(uv, tri, scale, pad);
+    auto covered = [&m](long r, long c) {
+      if(r < 0 || r >= m.height()) return false;
+      for(const I::Chart_mask::Span& s : m.rows[std::size_t(r)])
+        if(s.first <= c && c < s.second) return true;
+      return false;
+    };
+    bool all = true;
+    for(const I::Triangle& t : tri)
+      for(int k = 0; k < 200; ++k) {
+        double a = unit(random), b = unit(random);
+        if(a + b > 1.) { a = 1. - a; b = 1. - b; }
+        const I::Vec2 &p = uv[std::size_t(t[0])], &q = uv[std::size_t(t[1])], &o = uv[std::size_t(t[2])];
+        const double x = scale * (p[0] + a * (q[0] - p[0]) + b * (o[0] - p[0])), y = scale * (p[1] + a * (q[1] - p[1]) + b * (o[1] - p[1]));
+        const long r = long(std::floor(y)), c = long(std::floor(x));
+        for(long i = 0; i <= 2 * pad; ++i)
+          for(long j = 0; j <= 2 * pad; ++j)
+            all = all && covered(r + i, c + j);
+      }
+    SMP_CHECK(all, "chart mask, trial " << trial << ": a point of a triangle outside the mask");
+  }
+}
+
 // A chart of a grid of `columns` x `rows` squares of side 0.1 on a cylinder of radius 1, around
 // `turn` of its circumference (a whole turn: an open tube, no disk).
 SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
@@ -918,6 +997,8 @@ int main(int argc, char** argv)
   needle_alone();
   needles_stacked();
   packing_frame_first();
+  cell_bitmap();
+  chart_mask_covers();
   chart_starts();
   interior_fold_repair();
   holes_without_seams();

@@ -15,6 +15,7 @@
 // share the packing's grid.) The charts are rasterized on several threads; the layout does not
 // depend on their number.
 
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Cell_bitmap.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
@@ -164,13 +165,21 @@ inline void merge_spans(std::vector<Chart_mask::Span>& row)
 inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri, double scale, long pad)
 {
   Chart_mask m;
-  std::vector<std::vector<Chart_mask::Span> > cut; // per row, the cells the triangles cut out
+  double x_high = 0., y_high = 0.;
+  for(const Triangle& t : tri)
+    for(int i = 0; i < 3; ++i) {
+      x_high = (std::max)(x_high, uv[std::size_t(t[std::size_t(i)])][0] * scale);
+      y_high = (std::max)(y_high, uv[std::size_t(t[std::size_t(i)])][1] * scale);
+    }
+  // the cells the triangles cut, per row, widened by `pad` all round (shifted by `pad`)
+  const long rows = tri.empty() ? 0 : long(std::floor(y_high)) + 1, columns = long(std::floor(x_high)) + 1;
+  Cell_bitmap cells(rows + 2 * pad, columns + 2 * pad);
   for(const Triangle& t : tri) {
     const Vec2 p[3] = {{uv[std::size_t(t[0])][0] * scale, uv[std::size_t(t[0])][1] * scale},
                        {uv[std::size_t(t[1])][0] * scale, uv[std::size_t(t[1])][1] * scale},
                        {uv[std::size_t(t[2])][0] * scale, uv[std::size_t(t[2])][1] * scale}};
-    const double y_low = (std::min)({p[0][1], p[1][1], p[2][1]}), y_high = (std::max)({p[0][1], p[1][1], p[2][1]});
-    const long r0 = (std::max)(0L, long(std::floor(y_low))), r1 = (std::max)(r0, long(std::floor(y_high)));
+    const double y_low = (std::min)({p[0][1], p[1][1], p[2][1]}), y_top = (std::max)({p[0][1], p[1][1], p[2][1]});
+    const long r0 = (std::max)(0L, long(std::floor(y_low))), r1 = (std::max)(r0, long(std::floor(y_top)));
     for(long r = r0; r <= r1; ++r) {
       // the triangle cut by the band r <= y <= r + 1: its corners inside and its sides' crossings
       double x0 = HUGE_VAL, x1 = -HUGE_VAL;
@@ -185,25 +194,19 @@ inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Tria
       }
       if(x0 > x1) continue;
       const long c0 = (std::max)(0L, long(std::floor(x0))), c1 = (std::max)(c0, long(std::floor(x1)));
-      if(cut.size() <= std::size_t(r)) cut.resize(std::size_t(r + 1));
-      cut[std::size_t(r)].emplace_back(c0, c1 + 1);
+      cells.set(r, c0, c1);
     }
   }
-  // widened by `pad` all round: row r gathers the rows r - 2 pad to r of the cut, shifted
-  m.rows.resize(cut.size() + std::size_t(2 * pad));
-  for(std::size_t r = 0; r < cut.size(); ++r) {
-    merge_spans(cut[r]);
-    for(const Chart_mask::Span& span : cut[r]) {
-      m.width = (std::max)(m.width, span.second + 2 * pad);
-      for(std::size_t k = r; k <= r + std::size_t(2 * pad); ++k)
-        m.rows[k].emplace_back(span.first, span.second + 2 * pad);
-    }
-  }
-  for(long r = 0; r < m.height(); ++r) {
+  cells.dilate(2 * pad);
+  m.rows.resize(std::size_t(cells.rows()));
+  for(long r = 0; r < cells.rows(); ++r) {
     auto& row = m.rows[std::size_t(r)];
-    merge_spans(row);
+    cells.runs(r, row);
     long w = 0;
-    for(const Chart_mask::Span& span : row) w = (std::max)(w, span.second - span.first);
+    for(const Chart_mask::Span& span : row) {
+      w = (std::max)(w, span.second - span.first);
+      m.width = (std::max)(m.width, span.second);
+    }
     if(w > 0) m.widest.emplace_back(w, r);
   }
   std::sort(m.widest.begin(), m.widest.end(), std::greater<std::pair<long, long> >());
