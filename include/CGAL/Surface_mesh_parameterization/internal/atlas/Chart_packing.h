@@ -180,6 +180,12 @@ inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Tria
                        {uv[std::size_t(t[2])][0] * scale, uv[std::size_t(t[2])][1] * scale}};
     const double y_low = (std::min)({p[0][1], p[1][1], p[2][1]}), y_top = (std::max)({p[0][1], p[1][1], p[2][1]});
     const long r0 = (std::max)(0L, long(std::floor(y_low))), r1 = (std::max)(r0, long(std::floor(y_top)));
+    if(r0 == r1 && y_low >= double(r0)) { // within one band (a small triangle on a fine grid): its corners
+      const double x0 = (std::min)({p[0][0], p[1][0], p[2][0]}), x1 = (std::max)({p[0][0], p[1][0], p[2][0]});
+      const long c0 = (std::max)(0L, long(std::floor(x0)));
+      cells.set(r0, c0, (std::max)(c0, long(std::floor(x1))));
+      continue;
+    }
     for(long r = r0; r <= r1; ++r) {
       // the triangle cut by the band r <= y <= r + 1: its corners inside and its sides' crossings
       double x0 = HUGE_VAL, x1 = -HUGE_VAL;
