@@ -613,7 +613,8 @@ void cell_bitmap()
   }
 }
 
-// A chart's mask holds the cells of every point of its triangles, widened by the pad.
+// A chart's mask holds the cells of every point of its triangles, widened by the pad; so does
+// the mask of the chart half turned, made from it, with the packing's shift.
 void chart_mask_covers()
 {
   namespace I = SMP::internal;
@@ -628,28 +629,39 @@ void chart_mask_covers()
       for(int k = 0; k < 3; ++k) uv.push_back({x + r * unit(random), y + r * unit(random)});
       tri.push_back({b, b + 1, b + 2});
     }
+    I::Vec2 extent = {0., 0.};
+    for(const I::Vec2& q : uv) { extent[0] = (std::max)(extent[0], q[0]); extent[1] = (std::max)(extent[1], q[1]); }
     const double scale = 0.5 + 2. * unit(random);
     const long pad = trial % 3;
-    const I::Chart_mask m = I::chart_mask(uv, tri, scale, pad);
-    auto covered = [&m](long r, long c) {
-      if(r < 0 || r >= m.height()) return false;
-      for(const I::Chart_mask::Span& s : m.rows[std::size_t(r)])
-        if(s.first <= c && c < s.second) return true;
-      return false;
-    };
-    bool all = true;
-    for(const I::Triangle& t : tri)
-      for(int k = 0; k < 200; ++k) {
-        double a = unit(random), b = unit(random);
-        if(a + b > 1.) { a = 1. - a; b = 1. - b; }
-        const I::Vec2 &p = uv[std::size_t(t[0])], &q = uv[std::size_t(t[1])], &o = uv[std::size_t(t[2])];
-        const double x = scale * (p[0] + a * (q[0] - p[0]) + b * (o[0] - p[0])), y = scale * (p[1] + a * (q[1] - p[1]) + b * (o[1] - p[1]));
-        const long r = long(std::floor(y)), c = long(std::floor(x));
-        for(long i = 0; i <= 2 * pad; ++i)
-          for(long j = 0; j <= 2 * pad; ++j)
-            all = all && covered(r + i, c + j);
-      }
-    SMP_CHECK(all, "chart mask, trial " << trial << ": a point of a triangle outside the mask");
+    const I::Chart_mask straight = I::chart_mask(uv, tri, scale, pad), turned = I::half_turned(straight);
+    // the half-turned mask holds the half-turned chart shifted as the packing shifts it
+    const std::vector<I::Vec2> half = I::turned_chart(uv, extent, 2);
+    const I::Vec2 shift = {double(straight.width - 2 * pad) - scale * extent[0],
+                           double(straight.height() - 2 * pad) - scale * extent[1]};
+    for(int h = 0; h < 2; ++h) {
+      const I::Chart_mask& m = h ? turned : straight;
+      const std::vector<I::Vec2>& chart = h ? half : uv;
+      auto covered = [&m](long r, long c) {
+        if(r < 0 || r >= m.height()) return false;
+        for(const I::Chart_mask::Span& s : m.rows[std::size_t(r)])
+          if(s.first <= c && c < s.second) return true;
+        return false;
+      };
+      bool all = true;
+      for(const I::Triangle& t : tri)
+        for(int k = 0; k < 200; ++k) {
+          double a = unit(random), b = unit(random);
+          if(a + b > 1.) { a = 1. - a; b = 1. - b; }
+          const I::Vec2 &p = chart[std::size_t(t[0])], &q = chart[std::size_t(t[1])], &o = chart[std::size_t(t[2])];
+          const double x = scale * (p[0] + a * (q[0] - p[0]) + b * (o[0] - p[0])) + (h ? shift[0] : 0.);
+          const double y = scale * (p[1] + a * (q[1] - p[1]) + b * (o[1] - p[1])) + (h ? shift[1] : 0.);
+          const long r = long(std::floor(y)), c = long(std::floor(x));
+          for(long i = 0; i <= 2 * pad; ++i)
+            for(long j = 0; j <= 2 * pad; ++j)
+              all = all && covered(r + i, c + j);
+        }
+      SMP_CHECK(all, "chart mask, trial " << trial << (h ? ", half turned" : "") << ": a point of a triangle outside the mask");
+    }
   }
 }
 

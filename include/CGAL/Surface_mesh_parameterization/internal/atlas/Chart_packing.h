@@ -377,19 +377,22 @@ inline std::vector<Vec2> turned_chart(const std::vector<Vec2>& uv, const Vec2& e
 struct Packing_input
 {
   std::vector<std::array<std::vector<Vec2>, 4> > turned_uv;
+  std::vector<Vec2> extent;       // of each chart not turned (turned by a quarter: the other way round)
   const std::vector<std::vector<Triangle> >* tri = nullptr;
   std::vector<double> area;       // uv area at that density
   double charts_area = 0., longest = 0., total_3d = 0.;
 };
 
 // A layout of the charts on a grid of cells: the scale (cells per surface unit), the side of
-// the square holding them, and each chart's corner and quarter turn.
+// the square holding them, and each chart's corner, quarter turn and shift (in cells, added
+// to its turned uv times the scale: see half_turned()).
 struct Packing_layout
 {
   double scale = 0.;
   long side = 0;
   std::vector<long> x, y;
   std::vector<int> turn;
+  std::vector<Vec2> shift;
 };
 
 inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
@@ -403,6 +406,7 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
   if(!(in.total_3d > 0.)) in.total_3d = 1.;
   in.area.resize(n);
   in.turned_uv.resize(n);
+  in.extent.resize(n);
   std::vector<double> length(n);
   parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
     // a chart without surface area gets the size of a small one
@@ -414,6 +418,7 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
     }
     for(Vec2& q : uv[c]) q = {s * q[0], s * q[1]};
     extent = {s * extent[0], s * extent[1]};
+    in.extent[c] = extent;
     length[c] = extent[0];
     for(int k = 0; k < 4; ++k)
       in.turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
@@ -424,6 +429,32 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
     in.charts_area += in.area[c];
   }
   return in;
+}
+
+// The mask of a chart turned by half a turn, from the mask `m` of the chart (`m` mirrored in
+// both directions: no triangle rasterized again). Its cells are those of the half-turned chart
+// shifted by the part of a cell that the chart leaves free in `m`'s last column and row:
+// (columns - extent[0] * scale, rows - extent[1] * scale), for `m`'s cut columns and rows
+// (its width and height less 2 pad) and the chart's `extent` as `m` has it.
+inline Chart_mask half_turned(const Chart_mask& m)
+{
+  Chart_mask h;
+  h.width = m.width;
+  const long height = m.height();
+  h.rows.resize(m.rows.size());
+  for(long r = 0; r < height; ++r) {
+    const auto& from = m.rows[std::size_t(height - 1 - r)];
+    auto& to = h.rows[std::size_t(r)];
+    to.reserve(from.size());
+    for(auto s = from.rbegin(); s != from.rend(); ++s)
+      to.emplace_back(m.width - s->second, m.width - s->first);
+  }
+  h.widest.reserve(m.widest.size());
+  for(const auto& w : m.widest)
+    h.widest.emplace_back(w.first, height - 1 - w.second);
+  std::sort(h.widest.begin(), h.widest.end(), std::greater<std::pair<long, long> >());
+  order_tests(h);
+  return h;
 }
 
 // The order in which charts are placed: by their area, or by the geometric mean of their area
@@ -442,14 +473,25 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   const auto pack = [&](double at) { // the side of the square at scale `at`, -1 beyond the texture
     std::vector<std::array<Chart_mask, 4> > masks(n);
     parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
-      for(std::size_t k = 0; k < 4; ++k)
+      for(std::size_t k = 0; k < 2; ++k) {
         masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], at, pad);
+        masks[c][k + 2] = half_turned(masks[c][k]);
+      }
     });
     if(by == Packing_order::AREA_AND_BOX)
       for(std::size_t c = 0; c < n; ++c)
         size[c] = std::sqrt(in.area[c] * double(masks[c][0].width) * double(masks[c][0].height()));
     trial.side = place_charts(masks, size, cells, trial.x, trial.y, trial.turn);
     trial.scale = at;
+    trial.shift.assign(n, Vec2{0., 0.});
+    for(std::size_t c = 0; c < n && trial.side > 0; ++c)
+      if(trial.turn[c] >= 2) { // half_turned() of the chart turned by turn - 2
+        const Chart_mask& m = masks[c][std::size_t(trial.turn[c] - 2)];
+        const Vec2& e = in.extent[c];
+        const bool quarter = trial.turn[c] == 3; // the extent of the chart a quarter turned
+        trial.shift[c] = {double(m.width - 2 * pad) - at * (quarter ? e[1] : e[0]),
+                          double(m.height() - 2 * pad) - at * (quarter ? e[0] : e[1])};
+      }
     if(trial.side > 0 && at > best.scale)
       best = trial;
     return trial.side;
@@ -540,7 +582,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     // is unbounded for needles, whose extent is not in proportion to their area)
     const double fit = double((std::max)(cells - 2 * pad - 2, 1L)) / in.longest;
     best.scale = in.longest > 0. ? (std::min)(start, fit) : 1.;
-    best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0);
+    best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0); best.shift.assign(n, Vec2{0., 0.});
     long row = 0, widest = 0;
     for(std::size_t c = 0; c < n; ++c) {
       const Chart_mask m = chart_mask(uv[c], tri[c], best.scale, pad);
@@ -555,8 +597,8 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     const std::vector<Vec2>& from = in.turned_uv[c][std::size_t(best.turn[c])];
     std::vector<Vec2> placed(from.size());
     for(std::size_t v = 0; v < from.size(); ++v)
-      placed[v] = {(std::min)((double(best.x[c] + pad) + from[v][0] * best.scale) / side, 1.),
-                   (std::min)((double(best.y[c] + pad) + from[v][1] * best.scale) / side, 1.)};
+      placed[v] = {(std::min)((double(best.x[c] + pad) + best.shift[c][0] + from[v][0] * best.scale) / side, 1.),
+                   (std::min)((double(best.y[c] + pad) + best.shift[c][1] + from[v][1] * best.scale) / side, 1.)};
     uv[c].swap(placed);
   }
   r.side = side / best.scale;
