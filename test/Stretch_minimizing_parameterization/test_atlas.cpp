@@ -636,8 +636,7 @@ void chart_mask_covers()
     const I::Chart_mask straight = I::chart_mask(uv, tri, scale, pad), turned = I::half_turned(straight);
     // the half-turned mask holds the half-turned chart shifted as the packing shifts it
     const std::vector<I::Vec2> half = I::turned_chart(uv, extent, 2);
-    const I::Vec2 shift = {double(straight.width - 2 * pad) - scale * extent[0],
-                           double(straight.height() - 2 * pad) - scale * extent[1]};
+    const I::Vec2 shift = I::half_turn_shift(straight, extent, scale, pad);
     for(int h = 0; h < 2; ++h) {
       const I::Chart_mask& m = h ? turned : straight;
       const std::vector<I::Vec2>& chart = h ? half : uv;

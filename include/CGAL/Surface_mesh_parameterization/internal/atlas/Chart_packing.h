@@ -433,9 +433,7 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
 
 // The mask of a chart turned by half a turn, from the mask `m` of the chart (`m` mirrored in
 // both directions: no triangle rasterized again). Its cells are those of the half-turned chart
-// shifted by the part of a cell that the chart leaves free in `m`'s last column and row:
-// (columns - extent[0] * scale, rows - extent[1] * scale), for `m`'s cut columns and rows
-// (its width and height less 2 pad) and the chart's `extent` as `m` has it.
+// shifted by half_turn_shift().
 inline Chart_mask half_turned(const Chart_mask& m)
 {
   Chart_mask h;
@@ -455,6 +453,15 @@ inline Chart_mask half_turned(const Chart_mask& m)
   std::sort(h.widest.begin(), h.widest.end(), std::greater<std::pair<long, long> >());
   order_tests(h);
   return h;
+}
+
+// The shift (in cells) of a chart half turned for its mask half_turned(`m`), `m` being the
+// chart's mask at `scale` with `pad`, and `extent` the chart's extent as `m` has it: the part of
+// a cell that the chart leaves free in `m`'s last column and row (`m`'s cut columns and rows are
+// its width and height less 2 pad).
+inline Vec2 half_turn_shift(const Chart_mask& m, const Vec2& extent, double scale, long pad)
+{
+  return {double(m.width - 2 * pad) - scale * extent[0], double(m.height() - 2 * pad) - scale * extent[1]};
 }
 
 // The order in which charts are placed: by their area, or by the geometric mean of their area
@@ -486,11 +493,9 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
     trial.shift.assign(n, Vec2{0., 0.});
     for(std::size_t c = 0; c < n && trial.side > 0; ++c)
       if(trial.turn[c] >= 2) { // half_turned() of the chart turned by turn - 2
-        const Chart_mask& m = masks[c][std::size_t(trial.turn[c] - 2)];
         const Vec2& e = in.extent[c];
-        const bool quarter = trial.turn[c] == 3; // the extent of the chart a quarter turned
-        trial.shift[c] = {double(m.width - 2 * pad) - at * (quarter ? e[1] : e[0]),
-                          double(m.height() - 2 * pad) - at * (quarter ? e[0] : e[1])};
+        trial.shift[c] = half_turn_shift(masks[c][std::size_t(trial.turn[c] - 2)],
+                                         trial.turn[c] == 3 ? Vec2{e[1], e[0]} : e, at, pad);
       }
     if(trial.side > 0 && at > best.scale)
       best = trial;
