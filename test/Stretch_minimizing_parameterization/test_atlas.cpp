@@ -30,6 +30,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <memory>
 #include <vector>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -849,31 +850,107 @@ void detached_pieces()
 
 // A packing cut that does not fill the square better is taken back: charts grown again from a
 // snapshot of the chart growing are the charts of before, vertices included.
-void growing_taken_back()
+// A torus grown into charts within a normal cone of `angle`, and the state of the growing: per
+// triangle its chart and its corners' chart vertices (4 entries a triangle).
+struct Grown_torus
 {
-  namespace I = SMP::internal;
-  const Soup s = torus(40, 16, false);
-  I::Atlas_triangles m;
-  SMP_CHECK(I::make_atlas_triangles(s.points, s.polygons, m).empty(), "the torus is refused");
-  const std::size_t nt = m.vertex.size();
-  I::Chart_growing g(m);
-  const int n = g.grow(std::vector<char>(nt, 1), 0, 0.5 * 3.14159265358979323846);
-  auto state = [&]() {
+  SMP::internal::Atlas_triangles m;
+  std::unique_ptr<SMP::internal::Chart_growing> g;
+  int charts = 0;
+
+  explicit Grown_torus(double angle)
+  {
+    const Soup s = torus(40, 16, false);
+    SMP_CHECK(SMP::internal::make_atlas_triangles(s.points, s.polygons, m).empty(), "the torus is refused");
+    g = std::make_unique<SMP::internal::Chart_growing>(m);
+    charts = g->grow(std::vector<char>(m.vertex.size(), 1), 0, angle);
+  }
+  std::vector<int> state()
+  {
     std::vector<int> v;
-    for(std::size_t t = 0; t < nt; ++t) {
-      v.push_back(g.chart(t));
-      for(int k = 0; k < 3; ++k) v.push_back(g.chart_vertex(int(3 * t) + k));
+    for(std::size_t t = 0; t < m.vertex.size(); ++t) {
+      v.push_back(g->chart(t));
+      for(int k = 0; k < 3; ++k) v.push_back(g->chart_vertex(int(3 * t) + k));
     }
     return v;
-  };
+  }
+};
+
+void growing_taken_back()
+{
+  Grown_torus grown(0.5 * 3.14159265358979323846);
+  const std::vector<int> before = grown.state();
+  const SMP::internal::Chart_growing::Snapshot snapshot = grown.g->snapshot();
+  std::vector<char> first(grown.m.vertex.size(), 0);
+  for(std::size_t t = 0; t < first.size(); ++t) first[t] = grown.g->chart(t) == 0;
+  const int made = grown.g->grow(first, grown.charts, 0.1, 4, 2);
+  SMP_CHECK(made >= 2 && grown.state() != before, "chart 0 was not grown again (" << made << " charts)");
+  grown.g->restore(snapshot);
+  SMP_CHECK(grown.state() == before, "the charts restored differ from the charts before");
+}
+
+// Two neighbouring charts joined, then taken back: the charts and their vertices are those of
+// before; joined, the two are one chart whose vertices on the shared edges are one.
+void merge_taken_back()
+{
+  namespace I = SMP::internal;
+  Grown_torus grown(0.3 * 3.14159265358979323846);
+  I::Chart_growing& g = *grown.g;
+  const std::size_t nt = grown.m.vertex.size();
+  const int n = grown.charts;
+  auto state = [&grown]() { return grown.state(); };
+  // chart 0 and a chart across one of its seams
+  std::vector<std::size_t> a, b;
+  int other = -1;
+  for(std::size_t t = 0; t < nt && other < 0; ++t)
+    for(int k = 0; k < 3 && other < 0; ++k) {
+      const int side = int(3 * t) + k, mate = g.mate(side);
+      if(g.chart(t) == 0 && mate >= 0 && g.chart(std::size_t(mate / 3)) != 0) other = g.chart(std::size_t(mate / 3));
+    }
+  for(std::size_t t = 0; t < nt; ++t) {
+    if(g.chart(t) == 0) a.push_back(t);
+    if(g.chart(t) == other) b.push_back(t);
+  }
+  SMP_CHECK(n >= 2 && other > 0, "the torus grew into " << n << " charts, chart 0 has no neighbour");
+  if(other < 0) return;
   const std::vector<int> before = state();
-  const I::Chart_growing::Snapshot snapshot = g.snapshot();
-  std::vector<char> first(nt, 0);
-  for(std::size_t t = 0; t < nt; ++t) first[t] = g.chart(t) == 0;
-  const int made = g.grow(first, n, 0.1, 4, 2);
-  SMP_CHECK(made >= 2 && state() != before, "chart 0 was not grown again (" << made << " charts)");
-  g.restore(snapshot);
-  SMP_CHECK(state() == before, "the charts restored differ from the charts before");
+  const I::Chart_growing::Merge_record record = g.merge(a, b, 0);
+  std::size_t moved = 0, shared = 0, glued = 0;
+  for(std::size_t t : b) moved += g.chart(t) == 0;
+  for(std::size_t t : b)
+    for(int k = 0; k < 3; ++k) {
+      const int side = int(3 * t) + k, mate = g.mate(side);
+      if(mate >= 0 && before[std::size_t(4 * (mate / 3))] == 0) {
+        ++shared;
+        glued += g.glued(side) && g.chart_vertex(side) == g.chart_vertex(I::Chart_growing::target_corner(mate));
+      }
+    }
+  SMP_CHECK(moved == b.size() && shared > 0 && glued > 0 && state() != before,
+            "joined: " << moved << " of " << b.size() << " triangles moved, " << glued << " of " << shared << " shared sides glued");
+  g.undo(record);
+  SMP_CHECK(state() == before, "the charts after the join was taken back differ from the charts before");
+}
+
+// A developable surface whose normals turn too far for one chart to grow over it is one chart
+// once the charts grown are joined: a half cylinder of quads, flattened without seam or stretch
+// (grown, it is three charts).
+void charts_joined()
+{
+  Soup s{"half cylinder", {}, {}};
+  const int columns = 48, rows = 30; // about square once flattened: no packing cut
+  for(int j = 0; j <= rows; ++j)
+    for(int i = 0; i <= columns; ++i) {
+      const double angle = 3.14159265358979323846 * i / columns;
+      s.points.emplace_back(std::cos(angle), std::sin(angle), 0.1 * j);
+    }
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < columns; ++i) {
+      const std::size_t a = std::size_t(j * (columns + 1) + i);
+      s.polygons.push_back({a, a + 1, a + columns + 2, a + columns + 1});
+    }
+  const SMP::Atlas_report r = run(s, 1.05);
+  SMP_CHECK(r.charts == 1 && r.seam_length == 0. && std::abs(r.l2_stretch - 1.) < 1e-9,
+            s.name << ": " << r.charts << " charts, seams " << r.seam_length << ", L2 " << r.l2_stretch);
 }
 
 // The atlas does not depend on the number of threads (charts are flattened, and rasterized
@@ -1018,6 +1095,8 @@ int main(int argc, char** argv)
   parts_count();
   detached_pieces();
   growing_taken_back();
+  merge_taken_back();
+  charts_joined();
   only_flat_polygons();
   scaled_soups();
   progress();

@@ -38,7 +38,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// flattened by this package (`Stretch_minimizing_parameterizer_3` with
 /// `Stretch_minimizing_preset::LOWEST_STRETCH`, then Newton steps on Sander's stretch with a free
 /// border: no face flips, the border never crosses itself); a chart whose normalized L2 stretch
-/// is above `max_stretch` is cut further. The charts are then scaled to one texel density,
+/// is above `max_stretch` is cut further, and neighbouring charts are joined where their union
+/// still flattens within `max_stretch` (shorter seams). The charts are then scaled to one texel density,
 /// turned to their smallest bounding rectangle and packed into the unit square with a gutter,
 /// without overlap.
 ///

@@ -260,6 +260,67 @@ public:
     m_state.swap(s.state);
   }
 
+  // What merge() changed, for undo(): the corners' parents before, the sides glued, and the
+  // triangles moved with the chart they came from.
+  struct Merge_record
+  {
+    std::vector<std::pair<int, int> > parent;
+    std::vector<int> glued;
+    std::vector<std::size_t> moved;
+    int from = -1;
+  };
+
+  // Joins the chart of `from_triangles` to chart `into` (of `into_triangles`): glued along one
+  // edge they share, then zipped along the path of shared edges it starts (each side glued
+  // meets the glued ones at a chart vertex), so that the union stays a disk; shared edges off
+  // that path are left as slits of the union. Only the corners of the two charts change (their
+  // classes hold no other corner).
+  Merge_record merge(const std::vector<std::size_t>& into_triangles, const std::vector<std::size_t>& from_triangles,
+                     int into)
+  {
+    Merge_record r;
+    r.from = from_triangles.empty() ? -1 : m_chart[from_triangles.front()];
+    for(const std::vector<std::size_t>* list : {&into_triangles, &from_triangles})
+      for(std::size_t t : *list)
+        for(int k = 0; k < 3; ++k)
+          r.parent.emplace_back(int(3 * t) + k, m_parent[3 * t + std::size_t(k)]);
+    std::vector<int> shared;
+    for(std::size_t t : from_triangles)
+      for(int k = 0; k < 3; ++k) {
+        const int s = int(3 * t) + k, mate = m_mate[s];
+        if(mate >= 0 && !m_glued[s] && m_chart[std::size_t(mate / 3)] == into)
+          shared.push_back(s);
+      }
+    for(bool zipped = !shared.empty(); zipped;) {
+      zipped = false;
+      for(int s : shared) {
+        const int mate = m_mate[s];
+        const bool at_source = find(source_corner(s)) == find(target_corner(mate));
+        const bool at_target = find(target_corner(s)) == find(source_corner(mate));
+        if(!m_glued[s] && (r.glued.empty() ? !at_source && !at_target : at_source != at_target)) {
+          glue(s);
+          r.glued.push_back(s);
+          zipped = true;
+        }
+      }
+    }
+    for(std::size_t t : from_triangles)
+      m_chart[t] = into;
+    r.moved = from_triangles;
+    return r;
+  }
+
+  // Takes back a merge() (no other change of the two charts since).
+  void undo(const Merge_record& r)
+  {
+    for(const auto& p : r.parent)
+      m_parent[std::size_t(p.first)] = p.second;
+    for(int s : r.glued)
+      m_glued[std::size_t(s)] = m_glued[std::size_t(m_mate[s])] = 0;
+    for(std::size_t t : r.moved)
+      m_chart[t] = r.from;
+  }
+
 private:
 
   void start_chart(int c)

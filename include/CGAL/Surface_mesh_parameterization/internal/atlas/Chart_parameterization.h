@@ -276,14 +276,15 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
 // The chart with its slits closed, so that it has holes instead: flattened from LSCM's map of
 // it with every hole but the longest border filled by CGAL's hole filling, the fillers kept as
 // guards through the polish (the holes stay open and nothing enters them), so that a chart
-// grown around a hole needs no seam to it. False if the chart has no slit, or the closed chart
-// is not a surface of genus 0 with holes, or LSCM's map of it is no bijection; `holes` tells
-// whether it is one (a slit closed without a hole is the cut of a cone, which the other starts
-// open).
-inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes)
+// grown around a hole needs no seam to it. False if the chart has no slit (unless
+// `without_slits`: then a chart with holes of its own is taken too), or the closed chart is not
+// a surface of genus 0 with holes, or LSCM's map of it is no bijection; `holes` tells whether it
+// is one (a slit closed without a hole is the cut of a cone, which the other starts open).
+inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes,
+                               bool without_slits = false)
 {
   holes = false;
-  if(chart.slits.empty())
+  if(chart.slits.empty() && !without_slits)
     return false;
   // the chart vertices on the two sides of a slit made one
   std::unordered_map<int, std::size_t> local; // input triangle -> chart triangle
@@ -360,9 +361,11 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
 
 // Flattens the chart, whose vertices are made (`make_chart_vertices()`): the first map that
 // ends at most `max_stretch` of, in turn, the chart with its slits closed, LSCM's map of a chart
-// without slits, and this package's; else the lowest of them. On failure `chart.ok` is false
-// and the caller splits the chart. Charts can be flattened on several threads at once.
-inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings)
+// without slits, and, if `minimize`, this package's; else the lowest of them. Without
+// `minimize` (the cheap starts only), a chart with holes and no slit starts from LSCM's map with
+// its holes filled, as it has no other. On failure `chart.ok` is false and the caller splits the
+// chart. Charts can be flattened on several threads at once.
+inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings, bool minimize = true)
 {
   chart.ok = false;
   chart.slits_closed = false;
@@ -389,7 +392,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     chart.slits_closed = best_closed;
   };
   bool holes = false;
-  if(flatten_with_holes(chart, settings, holes)) {
+  if(flatten_with_holes(chart, settings, holes, !minimize)) {
     if(chart.l2 <= settings.max_stretch)
       return;
     keep();
@@ -414,7 +417,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     keep();
   }
   chart.ok = false;
-  if(flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv)) {
+  if(minimize && flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv)) {
     measure_chart(chart);
     keep();
   }

@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/Atlas.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Atlas_input.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_joining.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_partition.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
@@ -52,6 +53,7 @@ struct Is_named_parameters : decltype(is_named_parameters(static_cast<const T*>(
 struct Atlas_settings
 {
   double max_stretch = 1.05;
+  int merge_rounds = 5;                  // rounds of joining neighbouring charts
   unsigned int threads = 0; // 0: one per core
   Packing_settings packing;
   Chart_parameterization_settings chart;
@@ -174,10 +176,10 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   auto t0 = std::chrono::steady_clock::now();
   Chart_growing g(m);
   std::vector<char> allowed(nt, 1);
-  // a polygon joins a chart while its normal is within a right angle of the chart's: narrower
-  // cones cut many more seams for little less stretch, wider ones make charts that take
-  // longer to flatten and are cut more often for their stretch
-  const double first_angle = 0.5 * 3.14159265358979323846;
+  // a polygon joins a chart while its normal is within 54 degrees of the chart's: wider cones
+  // make charts that take longer to flatten and are cut more often for their stretch; the
+  // seams of narrower ones are mostly taken back when neighbouring charts are joined below
+  const double first_angle = 0.3 * 3.14159265358979323846;
   int n = g.grow(allowed, 0, first_angle, 0);
   std::vector<double> angle(std::size_t(n), first_angle);
   r.seconds_cutting += seconds_since(t0);
@@ -329,6 +331,17 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     }
   };
   settle(0, true);
+
+  // neighbouring charts joined where their union flattens within the bound
+  {
+    const auto t1 = std::chrono::steady_clock::now();
+    const auto joined = join_charts(m, g, charts, settings.chart, settings.merge_rounds, threads);
+    for(const std::pair<std::size_t, std::size_t>& pair : joined) {
+      areas[pair.first] = chart_areas(charts[pair.first]);
+      areas[pair.second] = Chart_areas();
+    }
+    r.seconds_parameterization += seconds_since(t1);
+  }
 
   // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
   // longest chart (the one that leaves the most room unused around it) is cut across. A cut
