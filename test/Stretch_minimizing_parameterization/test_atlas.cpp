@@ -28,9 +28,9 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <random>
 #include <string>
-#include <memory>
 #include <vector>
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -848,8 +848,6 @@ void detached_pieces()
   SMP_CHECK(alone == std::vector<int>({0, 0}), "a piece on its own changed parts");
 }
 
-// A packing cut that does not fill the square better is taken back: charts grown again from a
-// snapshot of the chart growing are the charts of before, vertices included.
 // A torus grown into charts within a normal cone of `angle`, and the state of the growing: per
 // triangle its chart and its corners' chart vertices (4 entries a triangle).
 struct Grown_torus
@@ -876,6 +874,8 @@ struct Grown_torus
   }
 };
 
+// A packing cut that does not fill the square better is taken back: charts grown again from a
+// snapshot of the chart growing are the charts of before, vertices included.
 void growing_taken_back()
 {
   Grown_torus grown(0.5 * 3.14159265358979323846);
