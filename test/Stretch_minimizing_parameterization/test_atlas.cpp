@@ -891,7 +891,7 @@ void growing_taken_back()
 
 // Two neighbouring charts joined, then taken back: the charts and their vertices are those of
 // before; joined, the two are one chart whose vertices on the shared edges are one.
-void merge_taken_back()
+void join_taken_back()
 {
   namespace I = SMP::internal;
   Grown_torus grown(0.3 * 3.14159265358979323846);
@@ -914,7 +914,7 @@ void merge_taken_back()
   SMP_CHECK(n >= 2 && other > 0, "the torus grew into " << n << " charts, chart 0 has no neighbour");
   if(other < 0) return;
   const std::vector<int> before = state();
-  const I::Chart_growing::Merge_record record = g.merge(a, b, 0);
+  const I::Chart_growing::Join_record record = g.join(a, b, 0);
   std::size_t moved = 0, shared = 0, glued = 0;
   for(std::size_t t : b) moved += g.chart(t) == 0;
   for(std::size_t t : b)
@@ -1095,7 +1095,7 @@ int main(int argc, char** argv)
   parts_count();
   detached_pieces();
   growing_taken_back();
-  merge_taken_back();
+  join_taken_back();
   charts_joined();
   only_flat_polygons();
   scaled_soups();

@@ -260,9 +260,9 @@ public:
     m_state.swap(s.state);
   }
 
-  // What merge() changed, for undo(): the corners' parents before, the sides glued, and the
+  // What join() changed, for undo(): the corners' parents before, the sides glued, and the
   // triangles moved with the chart they came from.
-  struct Merge_record
+  struct Join_record
   {
     std::vector<std::pair<int, int> > parent;
     std::vector<int> glued;
@@ -275,10 +275,10 @@ public:
   // meets the glued ones at a chart vertex), so that the union stays a disk; shared edges off
   // that path are left as slits of the union. Only the corners of the two charts change (their
   // classes hold no other corner).
-  Merge_record merge(const std::vector<std::size_t>& into_triangles, const std::vector<std::size_t>& from_triangles,
+  Join_record join(const std::vector<std::size_t>& into_triangles, const std::vector<std::size_t>& from_triangles,
                      int into)
   {
-    Merge_record r;
+    Join_record r;
     r.from = from_triangles.empty() ? -1 : m_chart[from_triangles.front()];
     for(const std::vector<std::size_t>* list : {&into_triangles, &from_triangles})
       for(std::size_t t : *list)
@@ -310,8 +310,8 @@ public:
     return r;
   }
 
-  // Takes back a merge() (no other change of the two charts since).
-  void undo(const Merge_record& r)
+  // Takes back a join() (no other change of the two charts since).
+  void undo(const Join_record& r)
   {
     for(const auto& p : r.parent)
       m_parent[std::size_t(p.first)] = p.second;

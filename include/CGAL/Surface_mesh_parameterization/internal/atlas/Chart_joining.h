@@ -76,11 +76,11 @@ join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& 
     if(pairs.empty())
       break;
     // glued one after the other (the pairs share no corner), flattened at once
-    std::vector<Chart_growing::Merge_record> records;
+    std::vector<Chart_growing::Join_record> records;
     std::vector<Chart_map> unions(pairs.size());
     for(std::size_t i = 0; i < pairs.size(); ++i) {
       const Chart_map &a = charts[std::size_t(pairs[i].first)], &b = charts[std::size_t(pairs[i].second)];
-      records.push_back(g.merge(a.triangles, b.triangles, pairs[i].first));
+      records.push_back(g.join(a.triangles, b.triangles, pairs[i].first));
       unions[i].triangles = a.triangles;
       unions[i].triangles.insert(unions[i].triangles.end(), b.triangles.begin(), b.triangles.end());
       std::sort(unions[i].triangles.begin(), unions[i].triangles.end()); // a polygon's triangles in a row

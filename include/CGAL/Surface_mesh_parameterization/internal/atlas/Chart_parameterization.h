@@ -273,18 +273,51 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
   return true;
 }
 
-// The chart with its slits closed, so that it has holes instead: flattened from LSCM's map of
-// it with every hole but the longest border filled by CGAL's hole filling, the fillers kept as
-// guards through the polish (the holes stay open and nothing enters them), so that a chart
-// grown around a hole needs no seam to it. False if the chart has no slit (unless
-// `without_slits`: then a chart with holes of its own is taken too), or the closed chart is not
-// a surface of genus 0 with holes, or LSCM's map of it is no bijection; `holes` tells whether it
-// is one (a slit closed without a hole is the cut of a cone, which the other starts open).
-inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes,
-                               bool without_slits = false)
+// `sm`, the faces of `flat` in their order, flattened from LSCM's map of it with every hole but
+// the longest border filled by CGAL's hole filling, the fillers kept as guards through the
+// polish (the holes stay open and nothing enters them): `uv` per vertex of `flat`. False if `sm`
+// is not a surface of genus 0 with holes (`holes` false, `sm` unchanged), or a hole cannot be
+// filled, or LSCM's map is no bijection.
+inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Chart_parameterization_settings& settings,
+                          std::vector<Vec2>& uv, bool& holes)
 {
   holes = false;
-  if(chart.slits.empty() && !without_slits)
+  std::vector<Chart_halfedge> loops;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
+  const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
+  if(loops.size() < 2 || euler != 2 - long(loops.size()))
+    return false;
+  holes = true;
+  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  for(Chart_halfedge h : loops) {
+    bool outer = false;
+    for(Chart_halfedge b : halfedges_around_face(h, sm))
+      outer = outer || b == bhd;
+    std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
+    if(!outer && (fill_hole_by_delaunay(sm, h, std::back_inserter(filler)), filler.empty()))
+      return false;
+  }
+  std::vector<Triangle> guard;
+  for(auto f : faces(sm))
+    if(std::size_t(f) >= flat.tri.size()) {
+      Triangle t;
+      int k = 0;
+      for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
+        t[std::size_t(k++)] = int(v);
+      guard.push_back(t);
+    }
+  return flatten_from_conformal(sm, bhd, flat, guard, settings.polish_iterations, uv);
+}
+
+// The chart with its slits closed, so that it has holes instead, flattened by flatten_holed(),
+// so that a chart grown around a hole needs no seam to it. False if the chart has no slit, or
+// the closed chart is not a surface of genus 0 with holes, or LSCM's map of it is no bijection;
+// `holes` tells whether it is one (a slit closed without a hole is the cut of a cone, which the
+// other starts open).
+inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes)
+{
+  holes = false;
+  if(chart.slits.empty())
     return false;
   // the chart vertices on the two sides of a slit made one
   std::unordered_map<int, std::size_t> local; // input triangle -> chart triangle
@@ -322,34 +355,8 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
       return false;
   }
   Chart_mesh sm;
-  if(!make_chart_mesh(closed, sm))
-    return false;
-  std::vector<Chart_halfedge> loops;
-  CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
-  const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
-  if(loops.size() < 2 || euler != 2 - long(loops.size()))
-    return false;
-  holes = true;
-  const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
-  for(Chart_halfedge h : loops) {
-    bool outer = false;
-    for(Chart_halfedge b : halfedges_around_face(h, sm))
-      outer = outer || b == bhd;
-    std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
-    if(!outer && (fill_hole_by_delaunay(sm, h, std::back_inserter(filler)), filler.empty()))
-      return false;
-  }
-  std::vector<Triangle> guard;
-  for(auto f : faces(sm))
-    if(std::size_t(f) >= closed.tri.size()) {
-      Triangle t;
-      int k = 0;
-      for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
-        t[std::size_t(k++)] = int(v);
-      guard.push_back(t);
-    }
   std::vector<Vec2> uv;
-  if(!flatten_from_conformal(sm, bhd, closed, guard, settings.polish_iterations, uv))
+  if(!make_chart_mesh(closed, sm) || !flatten_holed(closed, sm, settings, uv, holes))
     return false;
   chart.uv.resize(nv);
   for(std::size_t v = 0; v < nv; ++v)
@@ -362,9 +369,9 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
 // Flattens the chart, whose vertices are made (`make_chart_vertices()`): the first map that
 // ends at most `max_stretch` of, in turn, the chart with its slits closed, LSCM's map of a chart
 // without slits, and, if `minimize`, this package's; else the lowest of them. Without
-// `minimize` (the cheap starts only), a chart with holes and no slit starts from LSCM's map with
-// its holes filled, as it has no other. On failure `chart.ok` is false and the caller splits the
-// chart. Charts can be flattened on several threads at once.
+// `minimize` (the cheap starts only), a chart with holes of its own and no slit (a union of
+// charts) starts from flatten_holed(), as it has no other. On failure `chart.ok` is false and
+// the caller splits the chart. Charts can be flattened on several threads at once.
 inline void flatten_chart(Chart_map& chart, const Chart_parameterization_settings& settings, bool minimize = true)
 {
   chart.ok = false;
@@ -392,7 +399,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     chart.slits_closed = best_closed;
   };
   bool holes = false;
-  if(flatten_with_holes(chart, settings, holes, !minimize)) {
+  if(flatten_with_holes(chart, settings, holes)) {
     if(chart.l2 <= settings.max_stretch)
       return;
     keep();
@@ -406,6 +413,12 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   if(bhd == boost::graph_traits<Chart_mesh>::null_halfedge()) {
     take_best();
     return;
+  }
+  if(!minimize && chart.slits.empty() && flatten_holed(chart.flat, sm, settings, chart.uv, holes)) {
+    measure_chart(chart);
+    if(chart.ok && chart.l2 <= settings.max_stretch)
+      return;
+    keep();
   }
   // LSCM maps the two sides of a slit to a hole about onto each other, so its map of such a
   // chart is no bijection: that chart has had its LSCM start, with the slits closed

@@ -53,7 +53,7 @@ struct Is_named_parameters : decltype(is_named_parameters(static_cast<const T*>(
 struct Atlas_settings
 {
   double max_stretch = 1.05;
-  int merge_rounds = 5;                  // rounds of joining neighbouring charts
+  int join_rounds = 5;                  // rounds of joining neighbouring charts
   unsigned int threads = 0; // 0: one per core
   Packing_settings packing;
   Chart_parameterization_settings chart;
@@ -335,7 +335,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // neighbouring charts joined where their union flattens within the bound
   {
     const auto t1 = std::chrono::steady_clock::now();
-    const auto joined = join_charts(m, g, charts, settings.chart, settings.merge_rounds, threads);
+    const auto joined = join_charts(m, g, charts, settings.chart, settings.join_rounds, threads);
     for(const std::pair<std::size_t, std::size_t>& pair : joined) {
       areas[pair.first] = chart_areas(charts[pair.first]);
       areas[pair.second] = Chart_areas();
