@@ -577,7 +577,8 @@ void packing_frame_first()
 }
 
 // The packing's cell bitmap against a plain grid of booleans: random spans (across word
-// boundaries too) set, widened by d cells right and up, read back as runs.
+// boundaries too) set, widened by d cells right and up, read back as runs, searched for the
+// first set cell of a range and for the end of a run; rows added keep the others.
 void cell_bitmap()
 {
   namespace I = SMP::internal;
@@ -610,6 +611,22 @@ void cell_bitmap()
         }
       SMP_CHECK(runs == expected, "cell bitmap, trial " << trial << ", row " << r << ": " << runs.size() << " runs, "
                 << expected.size() << " expected");
+    }
+    const long more = rows + long(random() % 3);
+    bitmap.add_rows(more);
+    wide.resize(std::size_t(more), std::vector<char>(std::size_t(columns), 0));
+    for(int k = 0; k < 50; ++k) {
+      const long r = long(random() % std::uint32_t(more)), a = long(random() % std::uint32_t(columns));
+      const long b = a + 1 + long(random() % std::uint32_t(columns - a));
+      long first = a;
+      while(first < b && !wide[std::size_t(r)][std::size_t(first)]) ++first;
+      SMP_CHECK(bitmap.first_set(r, a, b) == first, "cell bitmap, trial " << trial << ": first set cell of row " << r
+                << " in [" << a << ", " << b << ") " << bitmap.first_set(r, a, b) << ", expected " << first);
+      long end = a;
+      while(end < columns && wide[std::size_t(r)][std::size_t(end)]) ++end;
+      if(wide[std::size_t(r)][std::size_t(a)])
+        SMP_CHECK(bitmap.run_end(r, a) == end, "cell bitmap, trial " << trial << ": run of row " << r << " from "
+                  << a << " ends at " << bitmap.run_end(r, a) << ", expected " << end);
     }
   }
 }

@@ -4,9 +4,10 @@
 #ifndef CGAL_SMP_INTERNAL_ATLAS_CELL_BITMAP_H
 #define CGAL_SMP_INTERNAL_ATLAS_CELL_BITMAP_H
 
-// The cells a chart covers on the packing's grid, a bit per cell: triangles are rasterized
-// into it span by span, it is widened by the gutter with word operations, and read back as
-// runs of cells, so that no list of spans is sorted and merged per row.
+// Cells of the packing's grid, a bit per cell. The cells a chart covers: triangles are
+// rasterized into it span by span, it is widened by the gutter with word operations, and read
+// back as runs of cells, so that no list of spans is sorted and merged per row. The cells taken
+// so far: whether a chart's span meets one is a test of a word or two.
 
 #include <algorithm>
 #include <cstddef>
@@ -26,6 +27,32 @@ public:
   {}
 
   long rows() const { return rows_; }
+
+  // Adds cleared rows up to `rows` rows.
+  void add_rows(long rows)
+  {
+    if(rows <= rows_) return;
+    rows_ = rows;
+    bits_.resize(std::size_t(rows_ * words_), 0);
+  }
+
+  // The first set cell of `row` in [first, end) (0 <= first < end <= columns), else `end`.
+  long first_set(long row, long first, long end) const
+  {
+    const std::uint64_t* w = word(row, 0);
+    long i = first / 64;
+    const long last = (end - 1) / 64;
+    std::uint64_t x = w[i] & (~std::uint64_t(0) << (first % 64));
+    while(x == 0) {
+      if(++i > last) return end;
+      x = w[i];
+    }
+    return (std::min)(end, i * 64 + lowest_bit(x));
+  }
+
+  // The first cleared cell of `row` from `c` on (the number of columns if none): the end of
+  // the run of set cells that holds `c`.
+  long run_end(long row, long c) const { return next(word(row, 0), c, false); }
 
   // Sets the cells [first, last] of `row`.
   void set(long row, long first, long last)
@@ -99,9 +126,19 @@ private:
       if(++i >= words_) return columns_;
       x = set ? w[i] : ~w[i];
     }
+    return (std::min)(columns_, i * 64 + lowest_bit(x));
+  }
+
+  // the position of the lowest set bit of `x` (not 0)
+  static long lowest_bit(std::uint64_t x)
+  {
+#if defined(__GNUC__) || defined(__clang__)
+    return long(__builtin_ctzll(x));
+#else
     long bit = 0;
     while(!(x & 1)) { x >>= 1; ++bit; }
-    return (std::min)(columns_, i * 64 + bit);
+    return bit;
+#endif
   }
 
   long rows_, columns_, words_;

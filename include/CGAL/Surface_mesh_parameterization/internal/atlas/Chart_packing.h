@@ -229,27 +229,25 @@ inline Chart_mask::Span widest_span(const Chart_mask& m)
   return best;
 }
 
-// The cells taken so far, per row as in Chart_mask, in a strip of `width` columns, with the
-// longest free run of each row (rows above the top are free).
+// The cells taken so far in a strip of `width` columns: per row as in Chart_mask (the free
+// runs between them are where a chart may go) and as bits (where a chart's span is tested),
+// with what gives the longest free run of a row left of any column (rows above the top are free).
 class Occupancy
 {
 public:
-  explicit Occupancy(long width) : width_(width) {}
+  explicit Occupancy(long width) : width_(width), taken_(0, width) {}
   long height() const { return long(rows_.size()); }
 
   // Whether `m` fits with its corner at (x, y); if not, `next_x` receives an x > `x` below
-  // which it does not fit either (the span that collided has to pass the cells it met).
+  // which it does not fit either (the span that collided has to pass the run of cells it met).
   bool fits(const Chart_mask& m, long x, long y, long& next_x) const
   {
     for(const long r : m.test_order) {
       if(y + r >= height()) continue;
-      const auto& row = rows_[std::size_t(y + r)];
       for(const Chart_mask::Span& s : m.rows[std::size_t(r)]) {
-        // the first taken span ending after the chart's span begins
-        const auto it = std::upper_bound(row.begin(), row.end(), x + s.first,
-                                         [](long v, const Chart_mask::Span& t) { return v < t.second; });
-        if(it != row.end() && it->first < x + s.second) {
-          next_x = it->second - s.first;
+        const long met = taken_.first_set(y + r, x + s.first, x + s.second);
+        if(met < x + s.second) {
+          next_x = taken_.run_end(y + r, met) - s.first;
           return false;
         }
       }
@@ -261,17 +259,22 @@ public:
   {
     if(rows_.size() < std::size_t(y + m.height())) {
       rows_.resize(std::size_t(y + m.height()));
-      free_run_.resize(rows_.size(), width_);
+      inner_run_.resize(rows_.size(), 0);
+      row_end_.resize(rows_.size(), 0);
+      taken_.add_rows(height());
     }
     for(long r = 0; r < m.height(); ++r) {
       auto& row = rows_[std::size_t(y + r)];
       if(m.rows[std::size_t(r)].empty()) continue;
-      for(const Chart_mask::Span& s : m.rows[std::size_t(r)])
+      for(const Chart_mask::Span& s : m.rows[std::size_t(r)]) {
         row.emplace_back(x + s.first, x + s.second);
+        taken_.set(y + r, x + s.first, x + s.second - 1);
+      }
       merge_spans(row);
       long run = 0, end = 0;
       for(const Chart_mask::Span& s : row) { run = (std::max)(run, s.first - end); end = s.second; }
-      free_run_[std::size_t(y + r)] = (std::max)(run, width_ - end);
+      inner_run_[std::size_t(y + r)] = run;
+      row_end_[std::size_t(y + r)] = end;
     }
   }
 
@@ -293,7 +296,7 @@ public:
       if(best_side >= 0 && (best_side == side ? y + m.height() >= best_top : y + m.height() > best_side)) break;
       bool room = true; // rows whose longest free run is shorter than the chart's span there
       for(std::size_t i = 0; i < probes && room; ++i)
-        room = y + m.widest[i].second >= height() || free_run_[std::size_t(y + m.widest[i].second)] >= m.widest[i].first;
+        room = y + m.widest[i].second >= height() || free_run(y + m.widest[i].second, bound) >= m.widest[i].first;
       if(!room) continue;
       const long r = y + wide_row, right = bound - m.width; // the last corner x worth trying
       long gap_begin = 0, x_found = -1;
@@ -323,7 +326,15 @@ public:
 private:
   long width_;
   std::vector<std::vector<Chart_mask::Span> > rows_;
-  std::vector<long> free_run_;
+  Cell_bitmap taken_;
+  std::vector<long> inner_run_, row_end_; // per row: longest free run before its last taken cell; that cell's end
+
+  // the longest free run of `row` left of column `bound`
+  long free_run(long row, long bound) const
+  {
+    const long end = row_end_[std::size_t(row)];
+    return end < bound ? (std::max)(inner_run_[std::size_t(row)], bound - end) : inner_run_[std::size_t(row)];
+  }
 };
 
 // Places the charts, the largest `size` first, each in the quarter turn and at the place that
