@@ -66,6 +66,11 @@ struct Chart_map
 struct Chart_parameterization_settings
 {
   unsigned int polish_iterations = 10;   // free-border Newton steps
+  // the polish of a map from LSCM that is within `max_stretch` ends at a step that lowers the
+  // energy by less than this, relatively: coarser than the polisher's own tolerance, as each of
+  // the last steps costs a factorization for a gain far below the bound. A map above the bound
+  // is polished on (whether it ends within the bound, and where it is cut if not, depend on it).
+  double polish_tolerance = 1e-4;
   double max_stretch = HUGE_VAL;         // a map from LSCM at most this stretched is kept as it is
 };
 
@@ -151,7 +156,8 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
 // those of `flat`, then the `guard` faces (holes filled): they keep their place in the map
 // without counting in its stretch.
 inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Flat_triangles& flat,
-                                   const std::vector<Triangle>& guard, unsigned int newton_steps, std::vector<Vec2>& uv)
+                                   const std::vector<Triangle>& guard, const Chart_parameterization_settings& settings,
+                                   std::vector<Vec2>& uv)
 {
   std::vector<Chart_halfedge> loops;
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
@@ -195,9 +201,16 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   ps.direction = Sander_polish_direction::NEWTON;
   ps.free_border = true;
   ps.threads = 1;
-  ps.max_iterations = newton_steps;
+  ps.max_iterations = settings.polish_iterations;
+  double energy = HUGE_VAL;
+  const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
+    const bool gained = energy - step.energy > settings.polish_tolerance * step.energy;
+    energy = step.energy;
+    return gained || !(step.l2_stretch <= settings.max_stretch);
+  };
   Sander_energy_polisher<> polisher;
-  return polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps).status == Sander_polish_status::OK;
+  return polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
+         Sander_polish_status::OK;
 }
 
 // The stretch-minimizing parameterizer (LOWEST_STRETCH from a circular border, then the polish
@@ -306,7 +319,7 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
         t[std::size_t(k++)] = int(v);
       guard.push_back(t);
     }
-  return flatten_from_conformal(sm, bhd, flat, guard, settings.polish_iterations, uv);
+  return flatten_from_conformal(sm, bhd, flat, guard, settings, uv);
 }
 
 // The chart with its slits closed, so that it has holes instead, flattened by flatten_holed(),
@@ -423,7 +436,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   // LSCM maps the two sides of a slit to a hole about onto each other, so its map of such a
   // chart is no bijection: that chart has had its LSCM start, with the slits closed
   if(!holes &&
-     flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings.polish_iterations, chart.uv)) {
+     flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings, chart.uv)) {
     measure_chart(chart);
     if(chart.ok && chart.l2 <= settings.max_stretch)
       return;
