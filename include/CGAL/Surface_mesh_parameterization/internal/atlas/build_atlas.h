@@ -430,7 +430,10 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       settle(before, false); // told as packing rounds
       gather();
       const double after = estimated_utilization();
-      if(forced || after > utilization) {
+      // better by more than the rounding of the charts' areas: those add up to the surface's
+      // area whatever the cuts, so a packing of the same scale and side fills the square as
+      // before, and another scale or side changes the filling by far more than this
+      if(forced || after > utilization * (1. + 1e-4)) {
         utilization = after;
         if(final_estimates) {
           accepted = trial;
