@@ -150,7 +150,9 @@ public:
     m_mu = 0.;
     double E = energy_at(0.);
     r.energy_before = r.energy_after = m_area_term ? E * m_area_uv : E;
-    if(m_dofs == 0) {
+    // the normalized L2 stretch is at least 1, and 1 for an isometry up to scale only, which no
+    // step can better (checked before the first factorization, which would find it so)
+    if(m_dofs == 0 || r.l2_before <= 1. + 1e-12) {
       r.stop = Sander_polish_stop::CONVERGED;
       r.seconds = seconds();
       return r;
