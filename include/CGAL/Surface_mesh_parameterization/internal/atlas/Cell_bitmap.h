@@ -37,22 +37,11 @@ public:
   }
 
   // The first set cell of `row` in [first, end) (0 <= first < end <= columns), else `end`.
-  long first_set(long row, long first, long end) const
-  {
-    const std::uint64_t* w = word(row, 0);
-    long i = first / 64;
-    const long last = (end - 1) / 64;
-    std::uint64_t x = w[i] & (~std::uint64_t(0) << (first % 64));
-    while(x == 0) {
-      if(++i > last) return end;
-      x = w[i];
-    }
-    return (std::min)(end, i * 64 + lowest_bit(x));
-  }
+  long first_set(long row, long first, long end) const { return next(word(row, 0), first, end, true); }
 
   // The first cleared cell of `row` from `c` on (the number of columns if none): the end of
   // the run of set cells that holds `c`.
-  long run_end(long row, long c) const { return next(word(row, 0), c, false); }
+  long run_end(long row, long c) const { return next(word(row, 0), c, columns_, false); }
 
   // Sets the cells [first, last] of `row`.
   void set(long row, long first, long last)
@@ -94,9 +83,9 @@ public:
     const std::uint64_t* w = word(row, 0);
     long c = 0;
     while(c < columns_) {
-      c = next(w, c, true);
+      c = next(w, c, columns_, true);
       if(c >= columns_) break;
-      const long end = next(w, c, false);
+      const long end = next(w, c, columns_, false);
       out.emplace_back(c, end);
       c = end;
     }
@@ -117,16 +106,17 @@ private:
     }
   }
 
-  // the first cell from `c` on whose bit is `set` (columns_ if none)
-  long next(const std::uint64_t* w, long c, bool set) const
+  // the first cell in [c, end) whose bit is `set` (c < end <= columns_), else `end`
+  long next(const std::uint64_t* w, long c, long end, bool set) const
   {
     long i = c / 64;
+    const long last = (end - 1) / 64;
     std::uint64_t x = (set ? w[i] : ~w[i]) & (~std::uint64_t(0) << (c % 64));
     while(x == 0) {
-      if(++i >= words_) return columns_;
+      if(++i > last) return end;
       x = set ? w[i] : ~w[i];
     }
-    return (std::min)(columns_, i * 64 + lowest_bit(x));
+    return (std::min)(end, i * 64 + lowest_bit(x));
   }
 
   // the position of the lowest set bit of `x` (not 0)
