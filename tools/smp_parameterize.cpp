@@ -98,13 +98,14 @@ Options parse(int argc, char** argv)
      "square (default, CGAL's corners), ear-aware (square, corners that avoid flattened border faces), "
      "circle, natural (LSCM's border)")
     ("preset", po::value(&o.preset)->value_name("P"),
-     "paper (default: the paper's method) or lowest (clamped cotangent start, edge update, 30 descent "
-     "steps: lower stretch for 2-3 times the time)")
+     "paper (default: the paper's method) or lowest (clamped cotangent start, edge update, descent "
+     "steps: lower stretch for 2-4 times the time)")
     ("start", po::value(&o.start)->value_name("S"), "start weights of u0/u1/uopt: floater, mvc or cot (clamped cotangent)")
     ("update", po::value(&o.update)->value_name("U"), "stretch that divides the weights: vertex, symmetric or edge")
     ("rule", po::value(&o.rule)->value_name("R"), "when a step does not lower the stretch: stop or halve (eta)")
     ("descent", po::value(&o.descent)->value_name("N"),
-     "then at most N cheap descent steps on Sander's stretch energy (flip-free; default: the preset's, 0 or 30)")
+     "then at most N cheap descent steps of each kind on Sander's stretch energy (flip-free; default: the "
+     "preset's, 0 or 30)")
     ("polish", po::value(&o.polish)->value_name("N"), "then at most N Newton steps on Sander's stretch energy (flip-free)")
     ("polish-time", po::value(&o.polish_time)->value_name("S"), "time budget of the polish in seconds")
     ("free-border", po::bool_switch(&o.free_border), "let the polish move the border (never crossing itself)")

@@ -330,7 +330,8 @@ std::vector<Method> all_methods()
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 0.5);
      }},
-    {"uopt_lowest", "preset LOWEST_STRETCH (U^opt + 30 descent steps)", square, minimizer_solver + " + sparse Cholesky (proxy)",
+    {"uopt_lowest", "preset LOWEST_STRETCH (U^opt + descent steps)", square,
+     minimizer_solver + " + sparse Cholesky (proxy, split Newton)",
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH));
      }},

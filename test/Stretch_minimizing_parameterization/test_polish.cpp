@@ -176,15 +176,18 @@ void test_controls(const Start& s)
   SMP_CHECK(max_displacement(uv, seen) == 0., "the result is not the visitor's last map");
 }
 
-// The descent along the proxy from U^opt, border fixed and free: the energy never increases,
+// The descent steps of either kind (along the proxy, split Newton) from U^opt, border fixed and
+// free: the energy never increases,
 // no face flips at any step, fixed vertices stay, the free border stays simple, and it gains.
 void test_descent(const std::string& name, const Start& s)
 {
   SI::Flat_stretch fs;
+  for(const auto direction : {SI::Sander_polish_direction::DIRICHLET_PROXY, SI::Sander_polish_direction::SPLIT_NEWTON})
   for(bool free : {false, true}) {
-    const std::string what = name + (free ? " descent, free border" : " descent");
+    const bool split = direction == SI::Sander_polish_direction::SPLIT_NEWTON;
+    const std::string what = name + (split ? " split" : " proxy") + (free ? " descent, free border" : " descent");
     SI::Sander_polish_settings st;
-    st.direction = SI::Sander_polish_direction::DIRICHLET_PROXY;
+    st.direction = direction;
     st.max_iterations = 30;
     st.free_border = free;
     std::vector<Vec2> uv = s.uv;

@@ -185,12 +185,14 @@ void test_isometric_fixed_point()
   SMP_CHECK(max_displacement(uv, start) < 1e-9, "free border: the isometry moved by " << max_displacement(uv, start));
   SMP_CHECK(std::abs(rf.l2_after - 1.) < 1e-9, "free border: L2 " << rf.l2_after);
 
-  // the descent along the proxy: the gradient is zero, nothing moves
-  SI::Sander_polish_settings proxy;
-  proxy.direction = SI::Sander_polish_direction::DIRICHLET_PROXY;
-  const SI::Sander_polish_result rp = polisher.polish(g.m, {}, g.fixed, g.border, uv, proxy);
-  SMP_CHECK(rp.status == SI::Sander_polish_status::OK && rp.iterations == 0, "proxy: " << rp.message << " " << rp.iterations << " steps");
-  SMP_CHECK(max_displacement(uv, start) < 1e-9, "proxy: the isometry moved by " << max_displacement(uv, start));
+  // the descent steps of either kind: the gradient is zero, nothing moves
+  for(const auto direction : {SI::Sander_polish_direction::DIRICHLET_PROXY, SI::Sander_polish_direction::SPLIT_NEWTON}) {
+    SI::Sander_polish_settings descent;
+    descent.direction = direction;
+    const SI::Sander_polish_result rp = polisher.polish(g.m, {}, g.fixed, g.border, uv, descent);
+    SMP_CHECK(rp.status == SI::Sander_polish_status::OK && rp.iterations == 0, "descent: " << rp.message << " " << rp.iterations << " steps");
+    SMP_CHECK(max_displacement(uv, start) < 1e-9, "descent: the isometry moved by " << max_displacement(uv, start));
+  }
 }
 
 void test_perturbed_grid()
@@ -218,19 +220,23 @@ void test_perturbed_grid()
   std::cout << "perturbed grid: L2 " << r.l2_before << " -> " << std::setprecision(12) << r.l2_after
             << std::setprecision(6) << " in " << r.iterations << " iterations (" << stop_name(r.stop) << ")" << std::endl;
 
-  // the descent along the proxy (the Dirichlet energy's Hessian, which on a flat grid is the
-  // Hessian of E at the identity but for the twists) reaches the identity too
-  std::vector<Vec2> by_proxy = start_of_perturbed;
-  SI::Sander_polish_settings sp = st;
-  sp.direction = SI::Sander_polish_direction::DIRICHLET_PROXY;
-  sp.max_iterations = 2000;
-  const SI::Sander_polish_result rp = polisher.polish(g.m, {}, g.fixed, g.border, by_proxy, sp);
-  SMP_CHECK(rp.status == SI::Sander_polish_status::OK, rp.message);
-  SMP_CHECK(std::abs(rp.l2_after - 1.) < 1e-6 && max_displacement(by_proxy, identity) < 1e-5,
-            "perturbed grid, proxy: L2 " << rp.l2_before << " -> " << rp.l2_after << ", "
-            << max_displacement(by_proxy, identity) << " from the identity");
-  std::cout << "perturbed grid, proxy: L2 " << rp.l2_before << " -> " << std::setprecision(12) << rp.l2_after
-            << std::setprecision(6) << " in " << rp.iterations << " iterations (" << stop_name(rp.stop) << ")" << std::endl;
+  // the descent steps reach the identity too: along the proxy (the Dirichlet energy's Hessian,
+  // which on a flat grid is the Hessian of E at the identity but for the twists), and split
+  // Newton steps (the Hessian without its coupling of u and v)
+  for(const auto direction : {SI::Sander_polish_direction::DIRICHLET_PROXY, SI::Sander_polish_direction::SPLIT_NEWTON}) {
+    const char* what = direction == SI::Sander_polish_direction::SPLIT_NEWTON ? "split" : "proxy";
+    std::vector<Vec2> by_descent = start_of_perturbed;
+    SI::Sander_polish_settings sp = st;
+    sp.direction = direction;
+    sp.max_iterations = 2000;
+    const SI::Sander_polish_result rp = polisher.polish(g.m, {}, g.fixed, g.border, by_descent, sp);
+    SMP_CHECK(rp.status == SI::Sander_polish_status::OK, rp.message);
+    SMP_CHECK(std::abs(rp.l2_after - 1.) < 1e-6 && max_displacement(by_descent, identity) < 1e-5,
+              "perturbed grid, " << what << ": L2 " << rp.l2_before << " -> " << rp.l2_after << ", "
+              << max_displacement(by_descent, identity) << " from the identity");
+    std::cout << "perturbed grid, " << what << ": L2 " << rp.l2_before << " -> " << std::setprecision(12) << rp.l2_after
+              << std::setprecision(6) << " in " << rp.iterations << " iterations (" << stop_name(rp.stop) << ")" << std::endl;
+  }
 
   // a mirrored start gives the mirrored result
   std::vector<Vec2> mirrored = uv;

@@ -47,15 +47,16 @@ enum class Stretch_minimizing_preset
   /// `Stretch_update::VERTEX`, `Step_rule::STOP_AT_INCREASE`, \f$ \eta = 1 \f$. The default.
   PAPER,
   /// `Start_weights::CLAMPED_COTANGENT`, `Stretch_update::EDGE`, `Step_rule::STOP_AT_INCREASE`,
-  /// \f$ \eta = 1 \f$, then `lowest_stretch_descent_iterations` descent steps of the polish
-  /// stage (`descent_iterations`): a lower stretch for two to three times the time of `PAPER`,
-  /// still no flipped face with a convex border.
+  /// \f$ \eta = 1 \f$, then at most `lowest_stretch_descent_iterations` descent steps of the
+  /// polish stage (`descent_iterations`): a stretch close to the lowest the border allows, for
+  /// two to four times the time of `PAPER`, still no flipped face with a convex border.
   LOWEST_STRETCH
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
-/// The descent steps of `Stretch_minimizing_preset::LOWEST_STRETCH`: on the bundled and CGAL's
-/// sample meshes, 30 steps gain most of what 100 gain, for about the time of the paper's method.
+/// The cap on each of the two kinds of descent steps of `Stretch_minimizing_preset::LOWEST_STRETCH`
+/// (see `descent_iterations`), which also stop when a step gains little: past that point the
+/// Newton steps of the polish (`polish_iterations`) go on to the optimum.
 constexpr unsigned int lowest_stretch_descent_iterations = 30;
 
 } // namespace Surface_mesh_parameterization

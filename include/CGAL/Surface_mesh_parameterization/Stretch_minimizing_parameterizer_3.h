@@ -82,9 +82,9 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// Beyond the paper, named parameters choose other start weights, another stretch update and
 /// another rule for a step that does not help, and a polish after \f$ U^{opt} \f$ that lowers
 /// Sander's stretch energy directly and keeps every face positive, with the border fixed or free
-/// (then never crossing itself): cheap descent steps preconditioned by the cotangent Laplacian of
-/// the mesh, then projected Newton steps. `Stretch_minimizing_preset::LOWEST_STRETCH` sets the
-/// start, the update and 30 descent steps.
+/// (then never crossing itself): cheap descent steps (along a fixed proxy, then projected Newton
+/// steps on u and v apart), then projected Newton steps. `Stretch_minimizing_preset::LOWEST_STRETCH` sets the start, the
+/// update and the descent steps.
 ///
 /// The border, the initial weights and the solver are chosen through the template parameters;
 /// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`
@@ -219,11 +219,15 @@ public:
   ///     \cgalParamDefault{`Step_rule::STOP_AT_INCREASE`, as in the paper}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{descent_iterations}
-  ///     \cgalParamDescription{after \f$ U^{opt} \f$, at most this many steps of descent of Sander's L2
-  ///                           stretch energy along its gradient preconditioned by the cotangent Laplacian
-  ///                           of the mesh (factored once: a step costs a gradient, two triangular solves and
-  ///                           a line search, far less than a reweighting step), flip-free by construction of
-  ///                           the line search (0: none)}
+  ///     \cgalParamDescription{after \f$ U^{opt} \f$, descent steps of Sander's L2 stretch energy, flip-free
+  ///                           by construction of the line search, at most this many of each kind: first along
+  ///                           its gradient preconditioned by the cotangent Laplacian of the mesh (factored once:
+  ///                           a step costs far less than a reweighting step) while a step lowers the energy by
+  ///                           1% or more, then projected Newton steps without the terms of the Hessian that
+  ///                           couple u and v (two systems the size of the mesh, factored side by side: about a
+  ///                           quarter of the flops of a Newton step) while a step lowers it by 0.2% or more;
+  ///                           with `free_border(true)`, steps of the first kind only, until they converge
+  ///                           (0: none)}
   ///     \cgalParamType{unsigned int}
   ///     \cgalParamDefault{0 (`Stretch_minimizing_preset::LOWEST_STRETCH`: see there)}
   ///   \cgalParamNEnd

@@ -6,12 +6,13 @@
 
 // Minimizes the L2 stretch energy of Sander, Snyder, Gortler and Hoppe (2001),
 //   E(uv) = sum_T A3(T) (a + c) / 2 = sum_T A3(T) ||J_T^-1||_F^2 / 2,
-// from a flip-free parameterization, keeping it flip-free: by projected Newton (a factorization
-// per step), or by descent along the gradient preconditioned by a fixed quadratic proxy, the
-// Dirichlet energy of the 3D mesh (the cotangent Laplacian, factored once: cheap steps that
-// converge more slowly; the proxy of Kovalsky, Galun and Lipman 2016, without their acceleration). J_T is the
-// Jacobian of the affine map from the face's 3D triangle (in a 2D frame of its plane) to its uv
-// triangle; ||J^-1||_F^2 = ||J||_F^2 / det(J)^2 = 1 / s1^2 + 1 / s2^2.
+// from a flip-free parameterization, keeping it flip-free: by projected Newton steps (the
+// Hessian of each face with its negative eigenvalues clamped, factored at every step), whole or
+// without the terms that couple u and v (two smaller factorizations), or by descent along the
+// gradient preconditioned by a fixed quadratic proxy, the Dirichlet energy of the 3D mesh (the
+// cotangent Laplacian, factored once; the proxy of Kovalsky, Galun and Lipman 2016, without
+// their acceleration). J_T is the Jacobian of the affine map from the face's 3D triangle (in a
+// 2D frame of its plane) to its uv triangle; ||J^-1||_F^2 = ||J||_F^2 / det(J)^2 = 1 / s1^2 + 1 / s2^2.
 //
 // With a fixed border, no hole and no face of zero 3D area the uv area A of the energy faces is
 // constant, so E is the normalized L2 stretch up to a constant factor. With a free border (E
@@ -25,21 +26,23 @@
 // no energy face (e.g. the centre of a fan closing a hole), and it stops at a local minimum.
 //
 // Longer than most headers: one class, whose driver, setup, assembly and line search share the
-// state of one polish. The energy of one face, the bounds of a flip-free step and the proxy's
-// solver are in headers of their own.
+// state of one polish. The energy of one face, the bounds of a flip-free step and the solver of
+// the proxy and of the split systems are in headers of their own.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_face_energy.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flip_free_step.h>
-#include <CGAL/Surface_mesh_parameterization/internal/Sander_proxy_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
@@ -53,8 +56,13 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
-// How a step finds its direction.
-enum class Sander_polish_direction { NEWTON, DIRICHLET_PROXY };
+// How a step finds its direction: NEWTON solves the projected Hessian (one system of twice the
+// vertices); SPLIT_NEWTON leaves out its terms that couple u and v: two systems the size of
+// the vertices, each with about an eighth of the flops of the coupled one to factor, solved
+// side by side, for steps that lower the energy almost as much near the optimum; DIRICHLET_PROXY
+// solves the proxy, factored once: cheap steps that move the whole map, which far from the
+// optimum (a start compressed by orders of magnitude) go where the Newton steps stall.
+enum class Sander_polish_direction { NEWTON, SPLIT_NEWTON, DIRICHLET_PROXY };
 
 struct Sander_polish_settings
 {
@@ -63,7 +71,8 @@ struct Sander_polish_settings
   double time_budget = 0.;    // seconds, checked before each step; <= 0: none
   bool free_border = false;   // let the outer border move (the vertices of `border`)
   double tolerance = 1e-6;    // converged when a step lowers the energy by less than this, relatively
-  unsigned int threads = 1;   // of the stretch measured after each step (the result does not depend on it)
+  unsigned int threads = 1;   // of the stretch measured after each step and of the two systems of
+                              // SPLIT_NEWTON (the result does not depend on it)
 };
 
 // What a visitor sees after every Newton step.
@@ -83,8 +92,8 @@ typedef std::function<bool(const Sander_polish_step&)> Sander_polish_visitor;
 // free border, a border loop that is not simple).
 enum class Sander_polish_status { OK, BAD_START, SOLVER_FAILED };
 
-// CONVERGED: the last step, or the one the Newton model predicts, lowers the energy by less than
-// the tolerance; NO_PROGRESS: the line search found no step that lowers it.
+// CONVERGED: the last step, or the one the Newton model predicts (NEWTON only), lowers the energy
+// by less than the tolerance; NO_PROGRESS: the line search found no step that lowers it.
 enum class Sander_polish_stop { NOT_RUN, CONVERGED, ITERATION_CAP, TIME_BUDGET, VISITOR, NO_PROGRESS };
 
 struct Sander_polish_result
@@ -104,8 +113,9 @@ struct Sander_polish_result
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_polish_default_solver;
 
 // `Solver`: an Eigen sparse Cholesky solver reading the lower triangle, of the Newton system;
-// `ProxySolver`: the same for the proxy, or a class with the interface of Sander_proxy_solver.
-template <typename Solver = Sander_polish_default_solver, typename ProxySolver = Sander_proxy_solver>
+// `VertexSolver`: the same for the proxy and the split systems, or a class with the interface
+// of Sander_vertex_solver.
+template <typename Solver = Sander_polish_default_solver, typename VertexSolver = Sander_vertex_solver>
 class Sander_energy_polisher
 {
 public:
@@ -159,6 +169,7 @@ public:
     }
 
     const bool proxy = settings.direction == Sander_polish_direction::DIRICHLET_PROXY;
+    m_split = settings.direction == Sander_polish_direction::SPLIT_NEWTON;
     if(!proxy)
       build_newton_pattern();
     double first_trial = 1.; // of the line search; with the proxy, the last step taken
@@ -191,6 +202,10 @@ public:
         if(m_proxy_solver.info() != Eigen::Success)
           return fail(Sander_polish_status::SOLVER_FAILED, "the proxy could not be solved");
         Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> >(m_p.data(), Eigen::Index(m_dofs), 2) = m_pp;
+      } else if(m_split) {
+        if(!solve_split(!factored, settings.threads))
+          return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the Newton system failed");
+        factored = true;
       } else {
         if(!factored)
           m_solver.analyzePattern(m_H);
@@ -206,7 +221,9 @@ public:
         return fail(Sander_polish_status::SOLVER_FAILED, "the step is not finite");
       m_p = -m_p;
       const double slope = m_g.dot(m_p);
-      if(!(-slope > 2. * settings.tolerance * E)) { // predicted decrease below the tolerance
+      // predicted decrease below the tolerance; the split model, which leaves out the coupling of
+      // u and v, predicts less than its steps gain: only a step's gain ends the split steps
+      if(!m_split && !(-slope > 2. * settings.tolerance * E)) {
         r.stop = Sander_polish_stop::CONVERGED;
         break;
       }
@@ -375,9 +392,35 @@ private:
   }
 
   // The pattern of the lower triangle of the Newton system; every face keeps where its 6x6
-  // block goes.
+  // block goes. Split: the pattern of one system of the vertices, the same for u and v, and
+  // where the 3x3 block of each face goes.
   void build_newton_pattern()
   {
+    if(m_split) {
+      std::vector<Eigen::Triplet<double> > entries;
+      entries.reserve(m_energy.size() * 6);
+      for(const Energy_face& f : m_energy)
+        for(int a = 0; a < 3; ++a)
+          for(int b = 0; b < 3; ++b) {
+            const int i = m_dof[f.v[a]], j = m_dof[f.v[b]];
+            if(i >= 0 && j >= 0 && i >= j)
+              entries.emplace_back(i, j, 0.);
+          }
+      const Eigen::Index n = Eigen::Index(m_dofs);
+      m_Hs[0].resize(n, n);
+      m_Hs[0].setFromTriplets(entries.begin(), entries.end());
+      m_Hs[0].makeCompressed();
+      m_Hs[1] = m_Hs[0];
+      m_slot.assign(9 * m_energy.size(), -1);
+      for(std::size_t k = 0; k < m_energy.size(); ++k)
+        for(int a = 0; a < 3; ++a)
+          for(int b = 0; b < 3; ++b) {
+            const int i = m_dof[m_energy[k].v[a]], j = m_dof[m_energy[k].v[b]];
+            if(i >= 0 && j >= 0 && i >= j)
+              m_slot[9 * k + 3 * a + b] = slot_of(m_Hs[0], i, j);
+          }
+      return;
+    }
     std::vector<Eigen::Triplet<double> > entries;
     entries.reserve(m_energy.size() * 21);
     for(const Energy_face& f : m_energy)
@@ -396,12 +439,37 @@ private:
       for(int a = 0; a < 6; ++a)
         for(int b = 0; b < 6; ++b) {
           const int i = index(m_energy[k].v[a / 2], a % 2), j = index(m_energy[k].v[b / 2], b % 2);
-          if(i >= 0 && j >= 0 && i >= j) {
-            const int* first = m_H.innerIndexPtr() + m_H.outerIndexPtr()[j];
-            const int* last = m_H.innerIndexPtr() + m_H.outerIndexPtr()[j + 1];
-            m_slot[36 * k + 6 * a + b] = int(std::lower_bound(first, last, i) - m_H.innerIndexPtr());
-          }
+          if(i >= 0 && j >= 0 && i >= j)
+            m_slot[36 * k + 6 * a + b] = slot_of(m_H, i, j);
         }
+  }
+
+  // The place of entry (i, j) in the values of the compressed matrix `M`, which has it.
+  static int slot_of(const Eigen::SparseMatrix<double>& M, int i, int j)
+  {
+    const int* first = M.innerIndexPtr() + M.outerIndexPtr()[j];
+    const int* last = M.innerIndexPtr() + M.outerIndexPtr()[j + 1];
+    return int(std::lower_bound(first, last, i) - M.innerIndexPtr());
+  }
+
+  // The split Newton step into m_p: the u and the v system factored (the pattern analysed
+  // first if `analyse`) and solved, side by side on two threads if there are two.
+  bool solve_split(bool analyse, unsigned int threads)
+  {
+    const Eigen::Index n = Eigen::Index(m_dofs);
+    bool ok[2] = {false, false};
+    parallel_for_each(2, (std::min)(threads, 2u), [&](std::size_t c) {
+      VertexSolver& solver = m_split_solver[c];
+      if(analyse)
+        solver.analyzePattern(m_Hs[c]);
+      solver.factorize(m_Hs[c]);
+      if(solver.info() != Eigen::Success)
+        return;
+      Eigen::Map<Eigen::VectorXd, 0, Eigen::InnerStride<2> > p(m_p.data() + c, n);
+      p = solver.solve(Eigen::Map<const Eigen::VectorXd, 0, Eigen::InnerStride<2> >(m_g.data() + c, n));
+      ok[c] = solver.info() == Eigen::Success;
+    });
+    return ok[0] && ok[1];
   }
 
   // The uv area of the energy faces of `x`.
@@ -446,8 +514,12 @@ private:
   void assemble(bool hessian)
   {
     m_g.setZero();
-    if(hessian)
+    if(hessian && m_split) {
+      for(Eigen::SparseMatrix<double>& M : m_Hs)
+        std::fill(M.valuePtr(), M.valuePtr() + M.nonZeros(), 0.);
+    } else if(hessian) {
       std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
+    }
     Eigen::Vector4d gJ;
     Eigen::Matrix4d HJ;
     Eigen::Matrix<double, 4, 6> B;
@@ -504,9 +576,20 @@ private:
           B(2 * r + c, 2 * a + r) = f.D(a, c);
   }
 
-  // Adds the 6x6 block of energy face k to the lower triangle of m_H.
+  // Adds the 6x6 block of energy face k to the lower triangle of m_H (split: its u and v parts
+  // to the u and v systems).
   void add_block(std::size_t k, const Eigen::Matrix<double, 6, 6>& Hx)
   {
+    if(m_split) {
+      for(int a = 0; a < 3; ++a)
+        for(int b = 0; b < 3; ++b) {
+          const int s = m_slot[9 * k + 3 * a + b];
+          if(s < 0) continue;
+          m_Hs[0].valuePtr()[s] += Hx(2 * a, 2 * b);
+          m_Hs[1].valuePtr()[s] += Hx(2 * a + 1, 2 * b + 1);
+        }
+      return;
+    }
     for(int a = 0; a < 6; ++a)
       for(int b = 0; b < 6; ++b) {
         const int s = m_slot[36 * k + 6 * a + b];
@@ -580,7 +663,7 @@ private:
   std::vector<int> m_border;
   std::vector<int> m_dof;                  // vertex -> unknown, -1 if it does not move
   std::size_t m_dofs = 0;
-  std::vector<int> m_slot;                 // 36 per energy face: entry of m_H, -1 if none
+  std::vector<int> m_slot;                 // 36 per energy face: entry of m_H, -1 if none (split: 9, of m_Hs)
   std::vector<Vec2> m_x, m_trial, m_dir, m_current;
   Simple_loop_check m_simple;              // of the border, with a free border
   bool m_flip = false;                     // uv is mirrored (v -> -v) in m_x so that faces are positive
@@ -588,10 +671,12 @@ private:
   bool m_area_term = false;
   double m_trial_t = 0.;                   // m_trial = m_x + m_trial_t * m_dir
   Eigen::SparseMatrix<double> m_H, m_P;    // Newton system, proxy
+  std::array<Eigen::SparseMatrix<double>, 2> m_Hs; // split Newton: the u and the v system
+  bool m_split = false;
   Eigen::VectorXd m_g, m_p;
   Eigen::Matrix<double, Eigen::Dynamic, 2> m_rhs, m_pp; // proxy solve, u and v columns
   Solver m_solver;
-  ProxySolver m_proxy_solver;
+  VertexSolver m_proxy_solver, m_split_solver[2];
   Flat_stretch m_stretch;
 };
 

@@ -171,10 +171,20 @@ inline void fit_in_unit_square(std::vector<Vec2>& uv)
     p = {(p[0] - lo[0]) / extent, (p[1] - lo[1]) / extent};
 }
 
-// Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps along the
-// gradient of Sander's energy preconditioned by the mesh's cotangent Laplacian (cheap), then by
-// projected Newton steps; `uv` is left as it is if the polish cannot start. The vertices from
-// `real_vertices` on are the centres of the fans closing the holes.
+// The descent steps of the polish stage with a fixed border: steps along the proxy while a step
+// lowers the energy by at least `proxy_descent_tolerance` relatively (far from the optimum,
+// where they gain most for their cost), then split Newton steps while a step lowers it by at
+// least `split_descent_tolerance`: past that each step gains little more, where the Newton steps
+// (polish_iterations) go on to the optimum. With a free border, steps along the proxy only, to
+// the polisher's tolerance: on the charts of the atlas (a circle's U^opt, then a free border)
+// the split steps cost more flattening time than the seams they saved.
+constexpr double proxy_descent_tolerance = 1e-2;
+constexpr double split_descent_tolerance = 2e-3;
+
+// Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps (along the
+// proxy, then projected Newton steps on u and v apart: cheap), then by projected Newton steps;
+// `uv` is left as it is if the polish cannot start. The vertices from `real_vertices` on are the centres of the fans
+// closing the holes.
 inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertices,
                          const Stretch_minimizing_settings& settings,
                          std::chrono::steady_clock::time_point start, std::vector<Vec2>& uv,
@@ -210,10 +220,17 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
   Sander_polish_result r;
   double seconds = 0.;
   bool first = true;
-  for(Sander_polish_direction direction : {Sander_polish_direction::DIRICHLET_PROXY, Sander_polish_direction::NEWTON}) {
-    descent = direction == Sander_polish_direction::DIRICHLET_PROXY;
+  for(Sander_polish_direction direction : {Sander_polish_direction::DIRICHLET_PROXY, Sander_polish_direction::SPLIT_NEWTON,
+                                           Sander_polish_direction::NEWTON}) {
+    descent = direction != Sander_polish_direction::NEWTON;
     Sander_polish_settings ps;
     ps.direction = direction;
+    if(direction == Sander_polish_direction::SPLIT_NEWTON && settings.free_border)
+      continue;
+    if(direction == Sander_polish_direction::DIRICHLET_PROXY && !settings.free_border)
+      ps.tolerance = proxy_descent_tolerance;
+    else if(direction == Sander_polish_direction::SPLIT_NEWTON)
+      ps.tolerance = split_descent_tolerance;
     ps.free_border = settings.free_border;
     ps.threads = thread_count(settings.threads);
     // a time budget alone leaves the Newton steps uncapped
@@ -237,7 +254,7 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
     if(first)
       pol.l2_before = r.l2_before;
     first = false;
-    (descent ? pol.descent_iterations : pol.iterations) = r.iterations;
+    (descent ? pol.descent_iterations : pol.iterations) += r.iterations;
     pol.l2_after = r.l2_after;
     pol.stop = r.stop == Stop::CONVERGED ? Polish_stop::CONVERGED
              : r.stop == Stop::ITERATION_CAP ? Polish_stop::ITERATION_CAP
