@@ -22,9 +22,9 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
-// Eigen's SimplicialLDLT, or, when SuiteSparse is used and the system is large, CHOLMOD with a
+// Eigen's SimplicialLDLT, or, when SuiteSparse is used and the system is large, CHOLMOD's with a
 // nested-dissection ordering (METIS), whose factor takes fewer flops than the minimum degree
-// ordering's on large meshes and whose dense fronts pay off there (the benchmark measures where).
+// ordering's on large meshes (the benchmark measures where).
 class Sander_vertex_solver
 {
 public:
@@ -39,6 +39,10 @@ public:
       m_cholmod.cholmod().print = 0; // its failure is handled here, not printed
       m_cholmod.cholmod().nmethods = 1;
       m_cholmod.cholmod().method[0].ordering = CHOLMOD_METIS;
+      // LDL^T, as Eigen's: a supernodal LL^T refuses the systems whose smallest eigenvalues
+      // are at the floor of the projected Hessians, where the LDL^T factors them
+      m_cholmod.cholmod().supernodal = CHOLMOD_SIMPLICIAL;
+      m_cholmod.cholmod().final_ll = 0;
       m_cholmod.analyzePattern(lower);
       if(m_cholmod.info() == Eigen::Success)
         return;

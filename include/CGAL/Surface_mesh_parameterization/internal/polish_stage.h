@@ -183,8 +183,8 @@ constexpr double split_descent_tolerance = 2e-3;
 
 // Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps (along the
 // proxy, then projected Newton steps on u and v apart: cheap), then by projected Newton steps;
-// `uv` is left as it is if the polish cannot start. The vertices from `real_vertices` on are the centres of the fans
-// closing the holes.
+// `uv` is left as it is if the polish cannot start. The vertices from `real_vertices` on are
+// the centres of the fans closing the holes.
 inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertices,
                          const Stretch_minimizing_settings& settings,
                          std::chrono::steady_clock::time_point start, std::vector<Vec2>& uv,
