@@ -397,59 +397,46 @@ private:
   void build_newton_pattern()
   {
     if(m_split) {
-      std::vector<Eigen::Triplet<double> > entries;
-      entries.reserve(m_energy.size() * 6);
-      for(const Energy_face& f : m_energy)
-        for(int a = 0; a < 3; ++a)
-          for(int b = 0; b < 3; ++b) {
-            const int i = m_dof[f.v[a]], j = m_dof[f.v[b]];
-            if(i >= 0 && j >= 0 && i >= j)
-              entries.emplace_back(i, j, 0.);
-          }
-      const Eigen::Index n = Eigen::Index(m_dofs);
-      m_Hs[0].resize(n, n);
-      m_Hs[0].setFromTriplets(entries.begin(), entries.end());
-      m_Hs[0].makeCompressed();
+      build_pattern(3, [this](int v, int) { return m_dof[v]; }, m_Hs[0]);
       m_Hs[1] = m_Hs[0];
-      m_slot.assign(9 * m_energy.size(), -1);
-      for(std::size_t k = 0; k < m_energy.size(); ++k)
-        for(int a = 0; a < 3; ++a)
-          for(int b = 0; b < 3; ++b) {
-            const int i = m_dof[m_energy[k].v[a]], j = m_dof[m_energy[k].v[b]];
-            if(i >= 0 && j >= 0 && i >= j)
-              m_slot[9 * k + 3 * a + b] = slot_of(m_Hs[0], i, j);
-          }
-      return;
+    } else {
+      build_pattern(6, [this](int v, int r) { return index(v, r); }, m_H);
     }
+  }
+
+  // The lower triangle of `M` over the unknowns `unknown(vertex, coordinate)` (-1: none) of the
+  // `block` / 3 coordinates of each corner of the energy faces, and m_slot: per face, where
+  // each entry of its block x block matrix goes (-1 if nowhere).
+  template <typename Unknown>
+  void build_pattern(int block, const Unknown& unknown, Eigen::SparseMatrix<double>& M)
+  {
+    const int per_corner = block / 3;
+    auto row = [&](const Energy_face& f, int a) { return unknown(f.v[a / per_corner], a % per_corner); };
     std::vector<Eigen::Triplet<double> > entries;
-    entries.reserve(m_energy.size() * 21);
+    entries.reserve(m_energy.size() * std::size_t(block * (block + 1) / 2));
     for(const Energy_face& f : m_energy)
-      for(int a = 0; a < 6; ++a)
-        for(int b = 0; b < 6; ++b) {
-          const int i = index(f.v[a / 2], a % 2), j = index(f.v[b / 2], b % 2);
+      for(int a = 0; a < block; ++a)
+        for(int b = 0; b < block; ++b) {
+          const int i = row(f, a), j = row(f, b);
           if(i >= 0 && j >= 0 && i >= j)
             entries.emplace_back(i, j, 0.);
         }
-    const Eigen::Index n = Eigen::Index(2 * m_dofs);
-    m_H.resize(n, n);
-    m_H.setFromTriplets(entries.begin(), entries.end());
-    m_H.makeCompressed();
-    m_slot.assign(36 * m_energy.size(), -1);
+    const Eigen::Index n = Eigen::Index(per_corner * m_dofs);
+    M.resize(n, n);
+    M.setFromTriplets(entries.begin(), entries.end());
+    M.makeCompressed();
+    const std::size_t size = std::size_t(block * block);
+    m_slot.assign(size * m_energy.size(), -1);
     for(std::size_t k = 0; k < m_energy.size(); ++k)
-      for(int a = 0; a < 6; ++a)
-        for(int b = 0; b < 6; ++b) {
-          const int i = index(m_energy[k].v[a / 2], a % 2), j = index(m_energy[k].v[b / 2], b % 2);
-          if(i >= 0 && j >= 0 && i >= j)
-            m_slot[36 * k + 6 * a + b] = slot_of(m_H, i, j);
+      for(int a = 0; a < block; ++a)
+        for(int b = 0; b < block; ++b) {
+          const int i = row(m_energy[k], a), j = row(m_energy[k], b);
+          if(i >= 0 && j >= 0 && i >= j) {
+            const int* first = M.innerIndexPtr() + M.outerIndexPtr()[j];
+            const int* last = M.innerIndexPtr() + M.outerIndexPtr()[j + 1];
+            m_slot[size * k + std::size_t(block * a + b)] = int(std::lower_bound(first, last, i) - M.innerIndexPtr());
+          }
         }
-  }
-
-  // The place of entry (i, j) in the values of the compressed matrix `M`, which has it.
-  static int slot_of(const Eigen::SparseMatrix<double>& M, int i, int j)
-  {
-    const int* first = M.innerIndexPtr() + M.outerIndexPtr()[j];
-    const int* last = M.innerIndexPtr() + M.outerIndexPtr()[j + 1];
-    return int(std::lower_bound(first, last, i) - M.innerIndexPtr());
   }
 
   // The split Newton step into m_p: the u and the v system factored (the pattern analysed

@@ -59,8 +59,8 @@ public:
       m_cholmod.factorize(lower);
       if(m_cholmod.info() == Eigen::Success)
         return;
-      // a free border leaves the proxy singular (translations): CHOLMOD's LLT refuses it, where
-      // the LDLT factors it (the line search copes with the free translation)
+      // a free border leaves the proxy singular (translations): CHOLMOD stops at its zero
+      // pivot, where Eigen's LDLT goes on (the line search copes with the free translation)
       m_large = false;
       m_small.analyzePattern(lower);
     }
@@ -86,11 +86,11 @@ public:
   template <typename Rhs>
   Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
-    const Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> dense = b;
+    typedef Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> Dense;
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_large) return m_cholmod.solve(dense);
+    if(m_large) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
 #endif
-    return m_small.solve(dense);
+    return m_small.solve(b);
   }
 
 private:
