@@ -30,9 +30,11 @@ namespace SMPI = CGAL::Surface_mesh_parameterization::internal;
 
 typedef SMP::Stretch_minimizing_parameterizer_3<Mesh> Smp;
 
-// A planar ring: clamped cotangent weights of a ring with acute angles are the plain
-// cotangent weights, which reproduce the centre (linear precision); with an obtuse angle
-// a cotangent weight is negative and gets raised to the floor.
+// A planar ring: cotangent weights of a ring with acute angles are positive and reproduce the
+// centre (linear precision); with an obtuse angle a cotangent weight is negative (the clamped
+// start raises it to a floor: test_stretch_minimizing checks that on meshes); a face of zero
+// area has no cotangent, and there the clamped start takes mean-value weights, and is no
+// longer symmetric.
 void check_ring_weights()
 {
   const double pi = 3.14159265358979323846;
@@ -43,32 +45,55 @@ void check_ring_weights()
     ring.push_back({c[0] + r * std::cos(a), c[1] + r * std::sin(a), 0.});
   }
   std::vector<double> w;
-  SMP_CHECK(SMPI::clamped_cotangent_ring_weights(c, ring, w), "cotangent weights of a regular ring");
-  double sum = 0., x = 0., y = 0., lowest = 1.;
+  double mean = 0.;
+  SMP_CHECK(SMPI::cotangent_ring_weights(c, ring, w, mean), "cotangent weights of a regular ring");
+  double sum = 0., x = 0., y = 0., lowest = 1., absolute = 0.;
   for(std::size_t k = 0; k < ring.size(); ++k) {
     sum += w[k];
+    absolute += std::abs(w[k]);
     x += w[k] * ring[k][0];
     y += w[k] * ring[k][1];
     lowest = (std::min)(lowest, w[k]);
   }
-  SMP_CHECK(std::abs(sum - 1.) < 1e-12 && lowest > 0., "weights sum " << sum << ", lowest " << lowest);
-  SMP_CHECK(std::hypot(x - c[0], y - c[1]) < 1e-12, "cotangent weights reproduce the centre: off by "
-                                                     << std::hypot(x - c[0], y - c[1]));
+  SMP_CHECK(lowest > 0. && std::abs(mean - absolute / double(ring.size())) < 1e-12 * mean,
+            "lowest weight " << lowest << ", mean " << mean);
+  SMP_CHECK(std::hypot(x / sum - c[0], y / sum - c[1]) < 1e-12, "cotangent weights reproduce the centre: off by "
+                                                                 << std::hypot(x / sum - c[0], y / sum - c[1]));
 
   // a ring with a very obtuse corner: the plain cotangent weight of that spoke is negative
   std::vector<SMPI::Vec3> skew = {{1., 0., 0.}, {0.05, 0.02, 0.}, {-1., 0., 0.}, {0., -1., 0.}};
   const SMPI::Vec3 o = {0., 0., 0.};
-  SMP_CHECK(SMPI::clamped_cotangent_ring_weights(o, skew, w), "cotangent weights of a skew ring");
-  for(std::size_t k = 0; k < w.size(); ++k)
-    SMP_CHECK(w[k] > 0. && std::isfinite(w[k]), "skew ring weight " << k << " = " << w[k]);
+  SMP_CHECK(SMPI::cotangent_ring_weights(o, skew, w, mean) && *std::min_element(w.begin(), w.end()) < 0.,
+            "the skew ring has no negative cotangent weight");
 
-  // a ring with a face of zero area falls back on mean-value weights
+  // a ring with a face of zero area has no cotangent weights
   std::vector<SMPI::Vec3> flat = {{1., 0., 0.}, {2., 0., 0.}, {0., 1., 0.}, {-1., 0., 0.}, {0., -1., 0.}};
-  std::vector<double> mv;
-  SMP_CHECK(SMPI::clamped_cotangent_ring_weights(o, flat, w) && SMPI::mean_value_ring_weights(o, flat, mv),
-            "weights of a ring with a zero-area face");
-  for(std::size_t k = 0; k < w.size(); ++k)
-    SMP_CHECK(std::abs(w[k] - mv[k]) < 1e-15, "zero-area face: weight " << k << " is not the mean-value one");
+  SMP_CHECK(!SMPI::cotangent_ring_weights(o, flat, w, mean), "cotangent weights of a ring with a zero-area face");
+
+  // on a mesh: vertex (2, 2) of a grid moved onto the line of (1, 1) and (1, 2) makes their
+  // face flat; the rings around it get mean-value weights, the others stay cotangent ones
+  Grid g = make_grid(4, 4);
+  put(CGAL::vertex_point, g.mesh, g.at(2, 2), Point_3(1., 1.5, 0.));
+  SMPI::Disk_component<Mesh> dc;
+  SMP_CHECK(dc.build(g.mesh, CGAL::Polygon_mesh_processing::longest_border(g.mesh).first,
+                     get(CGAL::vertex_point, g.mesh)) == SMP::OK, dc.message);
+  bool symmetric = true;
+  SMP_CHECK(SMPI::clamped_cotangent_weights(dc, w, symmetric) && !symmetric, "a flat face left the weights symmetric");
+  std::size_t mean_value_rows = 0;
+  for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
+    ring.clear();
+    for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e)
+      ring.push_back(dc.flat.xyz[dc.ring[e]]);
+    std::vector<double> expected;
+    const SMPI::Vec3& center = dc.flat.xyz[dc.interior[r]];
+    if(!SMPI::cotangent_ring_weights(center, ring, expected, mean)) {
+      ++mean_value_rows;
+      SMPI::mean_value_ring_weights(center, ring, expected);
+      for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e)
+        SMP_CHECK(w[e] == expected[std::size_t(e - dc.ring_begin[r])], "row " << r << ": not the mean-value weights");
+    }
+  }
+  SMP_CHECK(mean_value_rows == 3, mean_value_rows << " rows with a flat face, not 3");
 }
 
 // The stopping rule on its cases: an increase stops the paper's rule, and HALVE_ETA only once

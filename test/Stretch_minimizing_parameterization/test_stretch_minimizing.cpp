@@ -3,8 +3,8 @@
 //
 // The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
 // minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
-// initializers and solvers, the default solver on a large system, the result on several threads,
-// and the quality bar of the paper's Mannequin head.
+// initializers and solvers, symmetric weights and their Cholesky, the default solver on a large
+// system, the result on several threads, and the quality bar of the paper's Mannequin head.
 
 #include "smp_test_mesh.h"
 #include "solver_configuration_eigen.h"
@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+#include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -332,6 +333,82 @@ void check_solver_concept()
   SMP_CHECK(SMP::parameterize(l.mesh, pe, l.bhd, b) == SMP::OK, "Eigen_solver_traits");
   SMP_CHECK(pc.report().history.size() == pe.report().history.size() && max_distance(l.mesh, a, b) < 1e-9,
             "concept-only traits and Eigen_solver_traits differ by " << max_distance(l.mesh, a, b));
+}
+
+// Symmetric weights and their Cholesky. The clamped cotangent start gives w_ij = w_ji between
+// interior vertices, bit for bit, around the closed holes too and where the floor raised a
+// weight; a system of symmetric weights is factored by the Cholesky and solves as the LU of the
+// normalized rows does; and the LOWEST_STRETCH iteration (edge update: the weights stay
+// symmetric) takes the same steps as with traits that keep to the LU.
+void check_symmetric_weights(const std::string& name)
+{
+  Loaded l = load(name);
+  SMP::internal::Disk_component<Mesh> dc;
+  SMP_CHECK(dc.build(l.mesh, l.bhd, get(CGAL::vertex_point, l.mesh)) == SMP::OK, name << ": " << dc.message);
+  std::vector<double> w;
+  bool symmetric = false;
+  SMP_CHECK(SMP::internal::clamped_cotangent_weights(dc, w, symmetric) && symmetric, name << ": not symmetric");
+  std::size_t pairs = 0, asymmetric = 0, raised = 0;
+  std::vector<SMP::internal::Vec3> ring;
+  std::vector<double> raw;
+  double mean = 0.;
+  for(std::size_t r = 0; r < dc.number_of_rows(); ++r) {
+    ring.clear();
+    for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e)
+      ring.push_back(dc.flat.xyz[dc.ring[e]]);
+    SMP::internal::cotangent_ring_weights(dc.flat.xyz[dc.interior[r]], ring, raw, mean);
+    for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
+      SMP_CHECK(w[e] > 0., name << ": a weight is not positive");
+      raised += w[e] > raw[std::size_t(e - dc.ring_begin[r])];
+      const int j = dc.row[dc.ring[e]];
+      if(j < 0)
+        continue;
+      const int* first = &dc.ring[dc.ring_begin[j]];
+      const int* last = &dc.ring[dc.ring_begin[j + 1]];
+      const int* back = std::find(first, last, dc.interior[r]);
+      ++pairs;
+      asymmetric += back == last || w[std::size_t(back - &dc.ring[0])] != w[e];
+    }
+  }
+  SMP_CHECK(pairs > 0 && asymmetric == 0, name << ": " << asymmetric << " of " << pairs << " pairs differ");
+  std::cout << name << ": clamped cotangent weights, " << pairs << " symmetric pairs, " << raised
+            << " raised to the floor" << std::endl;
+
+  // the Cholesky of the symmetric system against the LU of the normalized one
+  typedef SMP::internal::Default_solver_traits Traits;
+  std::vector<SMP::internal::Vec2> uv_lu(dc.flat.xyz.size()), uv_ch;
+  for(std::size_t k = 0; k < dc.border.size(); ++k) {
+    const double t = 6.283185307179586 * double(k) / double(dc.border.size());
+    uv_lu[std::size_t(dc.border[k])] = {std::cos(t), std::sin(t)};
+  }
+  uv_ch = uv_lu;
+  std::vector<double> w_lu = w, w_ch = w;
+  Traits lu_traits, ch_traits;
+  SMP::internal::Weighted_laplacian_system<Traits> lu(dc, false), ch(dc, true);
+  SMP_CHECK(!lu.cholesky() && ch.cholesky(), name << ": the Cholesky is not taken where it should be");
+  SMP_CHECK(lu.solve(w_lu, uv_lu, lu_traits) && ch.solve(w_ch, uv_ch, ch_traits), name << ": a solve failed");
+  double distance = 0.;
+  for(std::size_t v = 0; v < uv_lu.size(); ++v)
+    distance = (std::max)(distance, std::hypot(uv_lu[v][0] - uv_ch[v][0], uv_lu[v][1] - uv_ch[v][1]));
+  SMP_CHECK(distance < 1e-10, name << ": the Cholesky and the LU differ by " << distance);
+  SMP_CHECK(w_ch == w, name << ": the Cholesky did not give the weights back as they were");
+
+  // the whole LOWEST_STRETCH iteration, against concept-only traits (always the LU)
+  namespace P = SMP::parameters;
+  SMP::Stretch_minimizing_parameterizer_3<Mesh> pd(P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH).descent_iterations(0u));
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Concept_only_traits> pc(
+    SMP::Shape_preserving_parameterizer_3<Mesh>(), P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH).descent_iterations(0u));
+  UV_map a = new_uv(l.mesh, "v:uv_cholesky"), b = new_uv(l.mesh, "v:uv_lu");
+  check_run(name + " LOWEST_STRETCH, Cholesky", l.mesh, l.bhd, pd, a, SMP::parameterize(l.mesh, pd, l.bhd, a));
+  SMP_CHECK(SMP::parameterize(l.mesh, pc, l.bhd, b) == SMP::OK, name << ": LOWEST_STRETCH with the LU failed");
+  const auto& hd = pd.report().history;
+  const auto& hc = pc.report().history;
+  bool same = hd.size() == hc.size();
+  for(std::size_t h = 0; same && h < hd.size(); ++h)
+    same = std::abs(hd[h].l2_stretch - hc[h].l2_stretch) <= 1e-9 * hc[h].l2_stretch;
+  SMP_CHECK(same && max_distance(l.mesh, a, b) < 1e-9,
+            name << ": LOWEST_STRETCH steps differ between the Cholesky and the LU (" << hd.size() << " and "
+                 << hc.size() << " steps, maps " << max_distance(l.mesh, a, b) << " apart)");
 }
 
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
@@ -698,6 +775,8 @@ int main()
   check_concurrent_copies();
   check_solver_configurations();
   check_solver_concept();
+  for(const char* name : {"three_peaks.off", "mannequin-devil.off", "head.off"})
+    check_symmetric_weights(name);
   check_readme_tables();
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
   check_umfpack_lu();

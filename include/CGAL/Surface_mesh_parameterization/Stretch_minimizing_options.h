@@ -18,6 +18,7 @@ enum class Start_weights
   SHAPE_PRESERVING,  ///< Floater's (1997) shape-preserving weights, whatever the initializer
   MEAN_VALUE,        ///< Floater's (2003) mean-value weights
   CLAMPED_COTANGENT  ///< cotangent weights raised to at least 1% of the mean absolute weight of their ring
+                     ///< (or of the neighbour's ring, if larger): symmetric, \f$ w_{ij} = w_{ji} \f$
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
@@ -26,7 +27,9 @@ enum class Stretch_update
 {
   VERTEX,    ///< \f$ \sigma_j \f$, the stretch of the neighbour (the paper's rule)
   SYMMETRIC, ///< \f$ (\sigma_i + \sigma_j) / 2 \f$
-  EDGE       ///< the stretch of the edge \f$ ij \f$: area-weighted RMS over its two faces
+  EDGE       ///< the stretch of the edge \f$ ij \f$: area-weighted RMS over its two faces (over
+             ///< \f$ \sigma_i \f$ and \f$ \sigma_j \f$ for an edge without a measured face,
+             ///< e.g. one closing a hole)
 };
 
 /// \ingroup PkgStretchMinimizingParameterizationRef

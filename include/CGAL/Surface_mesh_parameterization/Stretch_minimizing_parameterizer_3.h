@@ -129,6 +129,12 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///         namespace per configuration), never two definitions of one.
 ///         With the macro, a `Eigen::UmfPackLU` given here is ordered and run without refinement
 ///         the same way.
+///         Symmetric weights (the clamped cotangent start with the edge or symmetric update, as
+///         `Stretch_minimizing_preset::LOWEST_STRETCH` sets) make the system symmetric positive
+///         definite: a direct Eigen solver given here then gives way to a sparse Cholesky
+///         (Eigen's `SimplicialLDLT`, or CHOLMOD's with METIS on large systems when the package's
+///         macro `CGAL_SMP_USE_CHOLMOD` is defined), but for UMFPACK on large systems without
+///         CHOLMOD; the map is the same to rounding.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
 /// \sa `CGAL::Surface_mesh_parameterization::Stretch_minimizing_report`
@@ -419,13 +425,16 @@ private:
     }
 
     std::vector<double> w;
-    if(!initial_weights(mesh, dc, settings.start, w))
+    bool symmetric = false;
+    if(!initial_weights(mesh, dc, settings.start, w, symmetric))
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM,
                   "the initial weights of an interior vertex are not finite and positive "
                   "(degenerate faces, e.g. zero-length edges, around it)");
 
     std::vector<internal::Vec2> best_uv;
-    const bool solved = iterate(dc, settings, start, w, uv, best_uv, rep);
+    // the vertex update scales the columns of the weights: only the others keep them symmetric
+    symmetric = symmetric && settings.update != Stretch_update::VERTEX;
+    const bool solved = iterate(dc, settings, start, symmetric, w, uv, best_uv, rep);
     internal::release_factors_of(m_solver_traits);
     if(!solved)
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
@@ -443,13 +452,14 @@ private:
 
   // Solves, measures and reweights until the rule of `settings` stops; `best_uv` receives the
   // best flip-free parameterization (empty if U^0 has flipped faces). False if a solve fails.
+  // `symmetric`: the weights are and stay symmetric.
   bool iterate(const internal::Disk_component<Triangle_mesh>& dc,
                const internal::Stretch_minimizing_settings& settings,
-               std::chrono::steady_clock::time_point start,
+               std::chrono::steady_clock::time_point start, bool symmetric,
                std::vector<double>& w, std::vector<internal::Vec2>& uv,
                std::vector<internal::Vec2>& best_uv, Stretch_minimizing_report& rep)
   {
-    internal::Weighted_laplacian_system<Solver_traits> system(dc);
+    internal::Weighted_laplacian_system<Solver_traits> system(dc, symmetric);
     internal::Flat_stretch stretch;
     internal::Stretch_update_ratios ratios;
     ratios.init(settings.update, dc);
@@ -510,10 +520,14 @@ private:
 
   // w^0 in the ring order of `dc`: the initializer's, or computed on the flat rings; around a
   // closed hole, where the initializer cannot see the virtual faces, always on the flat ring
-  // (shape-preserving weights, unless other start weights are asked for)
+  // (shape-preserving weights, unless other start weights are asked for). `symmetric` tells
+  // whether w_ij = w_ji between interior vertices.
   bool initial_weights(const Triangle_mesh& mesh, const internal::Disk_component<Triangle_mesh>& dc,
-                       Start_weights kind, std::vector<double>& w)
+                       Start_weights kind, std::vector<double>& w, bool& symmetric)
   {
+    symmetric = false;
+    if(kind == Start_weights::CLAMPED_COTANGENT)
+      return internal::clamped_cotangent_weights(dc, w, symmetric);
     w.resize(dc.ring.size());
     internal::Shape_preserving_ring_weights floater;
     std::vector<internal::Vec3> ring;
@@ -525,11 +539,8 @@ private:
         for(int e = first; e < last; ++e)
           ring.push_back(dc.flat.xyz[dc.ring[e]]);
         const internal::Vec3& center = dc.flat.xyz[dc.interior[r]];
-        const bool ok = kind == Start_weights::MEAN_VALUE
-                          ? internal::mean_value_ring_weights(center, ring, ring_w)
-                          : kind == Start_weights::CLAMPED_COTANGENT
-                              ? internal::clamped_cotangent_ring_weights(center, ring, ring_w)
-                              : floater.compute(center, ring, ring_w);
+        const bool ok = kind == Start_weights::MEAN_VALUE ? internal::mean_value_ring_weights(center, ring, ring_w)
+                                                          : floater.compute(center, ring, ring_w);
         if(!ok)
           return false;
         std::copy(ring_w.begin(), ring_w.end(), w.begin() + first);

@@ -73,7 +73,7 @@ public:
         for(int e = dc.ring_begin[r]; e < dc.ring_begin[r + 1]; ++e) {
           const int j = dc.ring[e];
           const double s = m_kind == Stretch_update::SYMMETRIC ? 0.5 * (m_sigma[i] + m_sigma[j])
-                                                               : edge_stretch(e, stretch, m_sigma[j]);
+                                                               : edge_stretch(e, stretch, m_sigma[i], m_sigma[j]);
           w_out[e] = w_in[e] * std::pow(s / rms, -eta);
         }
       }
@@ -88,9 +88,10 @@ private:
     return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
   }
 
-  // area-weighted RMS stretch of the measured faces of the edge of ring entry e; `fallback`
-  // (the neighbour's stretch) for an edge with none, e.g. a virtual edge of a closed hole
-  double edge_stretch(int e, const Flat_stretch& stretch, double fallback) const
+  // area-weighted RMS stretch of the measured faces of the edge of ring entry e; for an edge
+  // with none (e.g. a virtual edge of a closed hole), the RMS of its ends' stretches `si` and
+  // `sj`: the same from either end, so that symmetric weights stay symmetric
+  double edge_stretch(int e, const Flat_stretch& stretch, double si, double sj) const
   {
     double num = 0., den = 0.;
     for(int slot = 0; slot < 2; ++slot) {
@@ -101,7 +102,7 @@ private:
       num += t.area_3d * t.l2 * t.l2;
       den += t.area_3d;
     }
-    return den > 0. ? std::sqrt(num / den) : fallback;
+    return den > 0. ? std::sqrt(num / den) : std::sqrt(0.5 * (si * si + sj * sj));
   }
 
   Stretch_update m_kind = Stretch_update::VERTEX;

@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
@@ -27,6 +28,11 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // The system sum_j w_ij (u_i - u_j) = 0 over the interior vertices, border vertices moved to
 // the right-hand side, each row divided by its weight sum (same solution, better scaled).
 //
+// Symmetric weights (w_ij = w_ji between interior vertices) make the system without that
+// division symmetric positive definite: it is then factored by a sparse Cholesky (LDL^T) from
+// its lower triangle, a fraction of the cost of an LU, in place of the direct Eigen solver of
+// the traits (which still serves where it is the faster, see `cholesky_pays()`).
+//
 // Only the weights change between steps, so the sparsity pattern is built once and analysed
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and
 // v columns together. Iterative solvers start from the previous solution. Solver traits that
@@ -44,16 +50,21 @@ class Weighted_laplacian_system
   typedef typename Kind::Matrix                              Matrix;
 
 public:
-  explicit Weighted_laplacian_system(const Disk_component_base& dc) : m_dc(dc)
+  // `symmetric`: the weights given to `solve()` are symmetric.
+  Weighted_laplacian_system(const Disk_component_base& dc, bool symmetric) : m_dc(dc)
   {
     const Eigen::Index n = Eigen::Index(dc.number_of_rows());
+    if constexpr(cholesky_possible)
+      m_cholesky = symmetric && cholesky_pays<typename Kind::Solver>(n);
     std::vector<Eigen::Triplet<double> > entries;
     entries.reserve(dc.ring.size() + dc.interior.size());
     for(Eigen::Index i = 0; i < n; ++i) {
       entries.emplace_back(i, i, 1.);
-      for(int e = dc.ring_begin[i]; e < dc.ring_begin[i + 1]; ++e)
-        if(dc.row[dc.ring[e]] >= 0)
-          entries.emplace_back(i, dc.row[dc.ring[e]], 0.);
+      for(int e = dc.ring_begin[i]; e < dc.ring_begin[i + 1]; ++e) {
+        const int j = dc.row[dc.ring[e]];
+        if(j >= 0 && !(m_cholesky && j > i)) // the lower triangle of a symmetric system
+          entries.emplace_back(i, j, 0.);
+      }
     }
     m_A.resize(n, n);
     m_A.setFromTriplets(entries.begin(), entries.end());
@@ -70,7 +81,7 @@ public:
           m_border_entries.push_back(e);
           continue;
         }
-        m_slot[e] = slot(i, j);
+        m_slot[e] = m_cholesky ? slot((std::max)(i, Eigen::Index(j)), (std::min)(i, Eigen::Index(j))) : slot(i, j);
         if(seen[std::size_t(j)] == int(i))
           m_repeated_neighbour = true; // its entry sums two weights: they cannot be told apart
         seen[std::size_t(j)] = int(i);
@@ -80,10 +91,13 @@ public:
     m_X.setZero(n, 2);
   }
 
+  // Whether the system is factored by the sparse Cholesky.
+  bool cholesky() const { return m_cholesky; }
+
   // Solves with the weights `w` (one per ring entry) and writes the interior rows of `uv`;
-  // the border entries of `uv` are read. `w` comes back divided by the weight sums of the rows.
-  // The rows are filled, and the u and v columns solved, on up to `threads` threads.
-  // Returns false if the solver fails.
+  // the border entries of `uv` are read. Unless the system is factored by the Cholesky, `w`
+  // comes back divided by the weight sums of the rows. The rows are filled, and the u and v
+  // columns solved, on up to `threads` threads. Returns false if the solver fails.
   bool solve(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads = 1)
   {
     const Eigen::Index n = m_A.rows();
@@ -91,20 +105,22 @@ public:
       return true;
     double* values = m_A.valuePtr();
     // each row writes its own entries of the matrix (a neighbour repeated in a ring is in the
-    // same row): no two threads write the same value
+    // same row; of a symmetric pair, the row below the diagonal): no two threads write the
+    // same value
     parallel_for(std::size_t(n), threads, parallel_grain, [&](std::size_t first, std::size_t last) {
       for(std::size_t i = first; i < last; ++i) {
         const int begin = m_dc.ring_begin[i], end = m_dc.ring_begin[i + 1];
         double sum = 0.;
         for(int e = begin; e < end; ++e)
           sum += w[e];
-        values[m_diag[i]] = 1.;
+        values[m_diag[i]] = m_cholesky ? sum : 1.;
         for(int e = begin; e < end; ++e)
-          if(m_slot[e] >= 0)
+          if(writes(i, e))
             values[m_slot[e]] = 0.;
         for(int e = begin; e < end; ++e) {
-          w[e] /= sum;
-          if(m_slot[e] >= 0)
+          if(!m_cholesky)
+            w[e] /= sum;
+          if(writes(i, e))
             values[m_slot[e]] -= w[e]; // -= keeps a repeated neighbour correct
         }
       }
@@ -113,7 +129,23 @@ public:
       m_border_weight[k] = w[m_border_entries[k]];
 
     bool ok = true;
-    if constexpr(!Kind::eigen) {
+    if(m_cholesky) {
+      if(!m_analysed) {
+        m_cholesky_solver.analyzePattern(m_A);
+        m_analysed = true;
+      }
+      const bool hand_back = !m_repeated_neighbour;
+      if(hand_back)
+        std::vector<double>().swap(w);
+      m_X.resize(0, 0);
+      m_cholesky_solver.factorize(m_A);
+      ok = m_cholesky_solver.info() == Eigen::Success;
+      if(ok)
+        m_X = m_cholesky_solver.solve(right_hand_side(uv));
+      ok = ok && m_cholesky_solver.info() == Eigen::Success;
+      if(hand_back)
+        restore(w, threads);
+    } else if constexpr(!Kind::eigen) {
       ok = solve_by_concept(traits, right_hand_side(uv));
     } else if constexpr(Kind::iterative) {
       // the preconditioner is rebuilt whole: Eigen 3.4's IncompleteLUT leaves its status
@@ -188,7 +220,13 @@ private:
     return B;
   }
 
-  // the normalized weights, from the matrix and the border weights
+  // whether row `i` writes the matrix entry of its ring entry `e`
+  bool writes(std::size_t i, int e) const
+  {
+    return m_slot[e] >= 0 && !(m_cholesky && m_dc.row[m_dc.ring[e]] > int(i));
+  }
+
+  // the weights (normalized, but for the Cholesky), from the matrix and the border weights
   void restore(std::vector<double>& w, unsigned int threads) const
   {
     w.resize(m_dc.ring.size());
@@ -217,7 +255,13 @@ private:
     return int(std::lower_bound(first, last, i) - m_A.innerIndexPtr());
   }
 
+  // the Cholesky takes the place of direct Eigen solvers on the same matrix type
+  static constexpr bool cholesky_possible =
+    Kind::eigen && !Kind::iterative && std::is_same<Matrix, Sander_vertex_solver::Matrix>::value;
+
   const Disk_component_base& m_dc;
+  bool m_cholesky = false;
+  Sander_vertex_solver m_cholesky_solver;
   Matrix m_A;
   std::vector<int> m_diag, m_slot; // positions in the value array (nonzeros fit an int, as Eigen's indices)
   std::vector<int> m_border_entries; // ring entries whose neighbour is on the border

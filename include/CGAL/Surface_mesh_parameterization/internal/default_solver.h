@@ -13,6 +13,8 @@
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
+
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
 
@@ -32,6 +34,16 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
+
+// Whether `Solver` is UMFPACK's LU (the package's wrapper or Eigen's).
+template <typename Solver>
+struct Is_umfpack : std::false_type { };
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
+template <typename Matrix>
+struct Is_umfpack<Umfpack_lu<Matrix> > : std::true_type { };
+template <typename Matrix>
+struct Is_umfpack<Eigen::UmfPackLU<Matrix> > : std::true_type { };
+#endif
 
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 typedef CGAL::Eigen_solver_traits<Umfpack_lu<Eigen_sparse_matrix<double>::EigenType> > Default_solver_traits;
@@ -60,6 +72,21 @@ struct Solver_kind<Traits, std::void_t<typename Traits::Solver::MatrixType, decl
   static constexpr bool iterative = std::is_base_of<Eigen::IterativeSolverBase<Solver>, Solver>::value;
   typedef typename Solver::MatrixType Matrix;
 };
+
+// Whether a symmetric system of `n` unknowns is better factored by the package's sparse
+// Cholesky (`Sander_vertex_solver`) than by the direct Eigen solver `Solver`: yes, but for
+// UMFPACK's LU on a large system when CHOLMOD is not there (Eigen's simplicial LDL^T then
+// factors with more fill than UMFPACK's ordering gives).
+template <typename Solver>
+bool cholesky_pays(Eigen::Index n)
+{
+#if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS) && !defined(CGAL_SMP_USE_CHOLMOD)
+  if constexpr(Is_umfpack<Solver>::value)
+    return n < Sander_vertex_solver::large_threshold;
+#endif
+  static_cast<void>(n);
+  return true;
+}
 
 // Analyses the pattern of `A`. A `UmfPackLU` given by the user is told to skip its iterative
 // refinement and ordered as `Umfpack_lu` orders (see there why).
