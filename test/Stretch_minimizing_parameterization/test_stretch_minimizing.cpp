@@ -504,6 +504,18 @@ void check_large_system()
   std::cout << "207k vertices: U^1 " << p.report().kept().l2_stretch << ", SparseLU " << reference.report().kept().l2_stretch
             << ", max distance " << max_distance(m, uv1, uvr) << std::endl;
 
+  // symmetric weights on a large system: CHOLMOD's supernodal Cholesky where CHOLMOD is used,
+  // else UMFPACK; the same map as the LU of concept-only traits
+  namespace P = SMP::parameters;
+  const auto lowest = P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH).descent_iterations(0u).number_of_iterations(1u);
+  Default_smp symmetric(lowest);
+  SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Concept_only_traits>
+    concept_lu(SMP::Shape_preserving_parameterizer_3<Mesh>(), lowest);
+  UV_map uvs = new_uv(m, "v:uv_symmetric"), uvc = new_uv(m, "v:uv_concept_lu");
+  check_run("207k vertices, symmetric weights", m, l.bhd, symmetric, uvs, SMP::parameterize(m, symmetric, l.bhd, uvs));
+  SMP_CHECK(SMP::parameterize(m, concept_lu, l.bhd, uvc) == SMP::OK, "207k vertices, symmetric weights by the LU");
+  SMP_CHECK(max_distance(m, uvs, uvc) < 1e-9, "symmetric weights: Cholesky and LU differ by " << max_distance(m, uvs, uvc));
+
   // a plain Eigen::UmfPackLU given by the user, as the class documentation offers
   typedef CGAL::Eigen_solver_traits<Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > Plain_umfpack;
   SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Plain_umfpack>

@@ -4,9 +4,10 @@
 #ifndef CGAL_SMP_INTERNAL_SANDER_VERTEX_SOLVER_H
 #define CGAL_SMP_INTERNAL_SANDER_VERTEX_SOLVER_H
 
-// The solver of the polisher's systems with one row per moving vertex, symmetric and positive
-// (semi)definite: the proxy (factored once) and the two split Newton systems (the pattern
-// analysed once, the values factored at every step).
+// The solver of the systems with one row per moving vertex, symmetric and positive
+// (semi)definite: the polisher's proxy (factored once) and its two split Newton systems, and the
+// stretch minimizer's systems of symmetric weights (the pattern analysed once, the values
+// factored at every step).
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -31,6 +32,16 @@ public:
   typedef Eigen::SparseMatrix<double> Matrix;
   static constexpr Eigen::Index large_threshold = 100000;
 
+  // `definite`: the systems are positive definite, so CHOLMOD may take its supernodal LL^T (much
+  // faster than its LDL^T on the largest systems, through BLAS).
+  explicit Sander_vertex_solver(bool definite = false)
+#if defined(CGAL_SMP_USE_CHOLMOD)
+    : m_definite(definite)
+#endif
+  {
+    static_cast<void>(definite);
+  }
+
   void analyzePattern(const Matrix& lower)
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
@@ -39,10 +50,10 @@ public:
       m_cholmod.cholmod().print = 0; // its failure is handled here, not printed
       m_cholmod.cholmod().nmethods = 1;
       m_cholmod.cholmod().method[0].ordering = CHOLMOD_METIS;
-      // LDL^T, as Eigen's: a supernodal LL^T refuses the systems whose smallest eigenvalues
-      // are at the floor of the projected Hessians, where the LDL^T factors them
-      m_cholmod.cholmod().supernodal = CHOLMOD_SIMPLICIAL;
-      m_cholmod.cholmod().final_ll = 0;
+      // else LDL^T, as Eigen's: a supernodal LL^T refuses the systems whose smallest
+      // eigenvalues are at the floor of the projected Hessians, where the LDL^T factors them
+      m_cholmod.cholmod().supernodal = m_definite ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+      m_cholmod.cholmod().final_ll = m_definite ? 1 : 0;
       m_cholmod.analyzePattern(lower);
       if(m_cholmod.info() == Eigen::Success)
         return;
@@ -98,6 +109,7 @@ private:
 #if defined(CGAL_SMP_USE_CHOLMOD)
   Eigen::CholmodDecomposition<Matrix, Eigen::Lower> m_cholmod;
   bool m_large = false;
+  bool m_definite = false;
 #endif
 };
 

@@ -261,7 +261,7 @@ private:
 
   const Disk_component_base& m_dc;
   bool m_cholesky = false;
-  Sander_vertex_solver m_cholesky_solver;
+  Sander_vertex_solver m_cholesky_solver{true}; // positive definite: the border holds it
   Matrix m_A;
   std::vector<int> m_diag, m_slot; // positions in the value array (nonzeros fit an int, as Eigen's indices)
   std::vector<int> m_border_entries; // ring entries whose neighbour is on the border
