@@ -331,7 +331,7 @@ std::vector<Method> all_methods()
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 0.5);
      }},
     {"uopt_lowest", "preset LOWEST_STRETCH (U^opt + descent steps)", square,
-     minimizer_solver + " + sparse Cholesky (proxy, split Newton)",
+     std::string("sparse Cholesky (the symmetric reweighting steps, the proxy, the split Newton steps)"),
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, SMP::parameters::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH));
      }},
