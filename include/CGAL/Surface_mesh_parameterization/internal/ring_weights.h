@@ -20,8 +20,9 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 
 // Relative floor of the clamped cotangent weights: a weight below this fraction of the mean
-// absolute cotangent weight of its ring is raised to it. Small enough to leave the weights of
-// well-shaped rings unchanged, large enough to keep the matrix an M-matrix.
+// absolute cotangent weight of its ring (or of its neighbour's, if larger) is raised to it.
+// Small enough to leave the weights of well-shaped rings unchanged, large enough to keep the
+// matrix an M-matrix.
 constexpr double cotangent_floor = 1e-2;
 
 // Cotangent (discrete harmonic) weights cot(alpha) + cot(beta) of the ring, unclamped, and the
