@@ -130,21 +130,7 @@ public:
 
     bool ok = true;
     if(m_cholesky) {
-      if(!m_analysed) {
-        m_cholesky_solver.analyzePattern(m_A);
-        m_analysed = true;
-      }
-      const bool hand_back = !m_repeated_neighbour;
-      if(hand_back)
-        std::vector<double>().swap(w);
-      m_X.resize(0, 0);
-      m_cholesky_solver.factorize(m_A);
-      ok = m_cholesky_solver.info() == Eigen::Success;
-      if(ok)
-        m_X = m_cholesky_solver.solve(right_hand_side(uv));
-      ok = ok && m_cholesky_solver.info() == Eigen::Success;
-      if(hand_back)
-        restore(w, threads);
+      ok = factor_and_solve(m_cholesky_solver, w, uv, threads);
     } else if constexpr(!Kind::eigen) {
       ok = solve_by_concept(traits, right_hand_side(uv));
     } else if constexpr(Kind::iterative) {
@@ -157,20 +143,7 @@ public:
         m_X = solver.solveWithGuess(right_hand_side(uv), m_X);
       ok = ok && solver.info() == Eigen::Success;
     } else {
-      auto& solver = traits.solver();
-      if(!m_analysed) {
-        analyze_pattern(solver, m_A);
-        m_analysed = true;
-      }
-      const bool hand_back = !m_repeated_neighbour;
-      if(hand_back)
-        std::vector<double>().swap(w);
-      m_X.resize(0, 0);
-      solver.factorize(m_A);
-      ok = solver.info() == Eigen::Success && solve_columns(solver, right_hand_side(uv), m_X, threads);
-      release_numeric(solver);
-      if(hand_back)
-        restore(w, threads);
+      ok = factor_and_solve(traits.solver(), w, uv, threads);
     }
     if(!ok || !m_X.allFinite())
       return false;
@@ -180,6 +153,27 @@ public:
   }
 
 private:
+  // With a direct solver (the traits' or the Cholesky): the pattern analysed once, then a
+  // factorization and the u and v columns; the weights are freed meanwhile and restored after.
+  template <typename Solver>
+  bool factor_and_solve(Solver& solver, std::vector<double>& w, const std::vector<Vec2>& uv, unsigned int threads)
+  {
+    if(!m_analysed) {
+      analyze_pattern(solver, m_A);
+      m_analysed = true;
+    }
+    const bool hand_back = !m_repeated_neighbour;
+    if(hand_back)
+      std::vector<double>().swap(w);
+    m_X.resize(0, 0);
+    solver.factorize(m_A);
+    const bool ok = solver.info() == Eigen::Success && solve_columns(solver, right_hand_side(uv), m_X, threads);
+    release_numeric(solver);
+    if(hand_back)
+      restore(w, threads);
+    return ok;
+  }
+
   // With solver traits that model CGAL's `SparseLinearAlgebraWithFactorTraits_d`: one
   // factorization, then the u and v columns (the solution of a column is X / D).
   bool solve_by_concept(SolverTraits& traits, const Eigen::MatrixXd& B)
