@@ -382,16 +382,25 @@ void check_symmetric_weights(const std::string& name)
     uv_lu[std::size_t(dc.border[k])] = {std::cos(t), std::sin(t)};
   }
   uv_ch = uv_lu;
-  std::vector<double> w_lu = w, w_ch = w;
-  Traits lu_traits, ch_traits;
-  SMP::internal::Weighted_laplacian_system<Traits> lu(dc, false), ch(dc, true);
-  SMP_CHECK(!lu.cholesky() && ch.cholesky(), name << ": the Cholesky is not taken where it should be");
-  SMP_CHECK(lu.solve(w_lu, uv_lu, lu_traits) && ch.solve(w_ch, uv_ch, ch_traits), name << ": a solve failed");
-  double distance = 0.;
-  for(std::size_t v = 0; v < uv_lu.size(); ++v)
+  std::vector<SMP::internal::Vec2> uv_ordered = uv_lu;
+  std::vector<double> w_lu = w, w_ch = w, w_ordered = w;
+  Traits lu_traits, ch_traits, ordered_traits;
+  // any elimination order gives the same solution: the vertices backwards
+  std::vector<int> rank(dc.flat.xyz.size());
+  for(std::size_t v = 0; v < rank.size(); ++v)
+    rank[v] = int(rank.size() - 1 - v);
+  SMP::internal::Weighted_laplacian_system<Traits> lu(dc, false, {}), ch(dc, true, {}), ordered(dc, true, rank);
+  SMP_CHECK(!lu.cholesky() && ch.cholesky() && ordered.cholesky(), name << ": the Cholesky is not taken where it should be");
+  SMP_CHECK(lu.solve(w_lu, uv_lu, lu_traits) && ch.solve(w_ch, uv_ch, ch_traits) &&
+            ordered.solve(w_ordered, uv_ordered, ordered_traits), name << ": a solve failed");
+  double distance = 0., distance_ordered = 0.;
+  for(std::size_t v = 0; v < uv_lu.size(); ++v) {
     distance = (std::max)(distance, std::hypot(uv_lu[v][0] - uv_ch[v][0], uv_lu[v][1] - uv_ch[v][1]));
+    distance_ordered = (std::max)(distance_ordered, std::hypot(uv_lu[v][0] - uv_ordered[v][0], uv_lu[v][1] - uv_ordered[v][1]));
+  }
   SMP_CHECK(distance < 1e-10, name << ": the Cholesky and the LU differ by " << distance);
-  SMP_CHECK(w_ch == w, name << ": the Cholesky did not give the weights back as they were");
+  SMP_CHECK(distance_ordered < 1e-10, name << ": the Cholesky in a given order and the LU differ by " << distance_ordered);
+  SMP_CHECK(w_ch == w && w_ordered == w, name << ": the Cholesky did not give the weights back as they were");
 
   // the whole LOWEST_STRETCH iteration, against concept-only traits (always the LU)
   namespace P = SMP::parameters;
@@ -479,6 +488,51 @@ void check_umfpack_lu()
   SMP_CHECK(wide.info() != Eigen::Success, "a singular matrix was factored by the 64-bit interface");
 }
 
+// The Cholesky factorizations of Sander_vertex_solver in a given order (Eigen's LDL^T, and
+// CHOLMOD's supernodal LL^T, which it takes for the definite systems of the largest meshes)
+// against Eigen's LDL^T in its own order, on a grid Laplacian with its border fixed; the LL^T
+// refuses a semidefinite system (which the solver then gives to the LDL^T).
+void check_ordered_solvers()
+{
+  typedef Eigen::SparseMatrix<double> Matrix;
+  const int side = 40, n = side * side;
+  std::vector<Eigen::Triplet<double> > entries;
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j) {
+      const int r = i * side + j;
+      entries.emplace_back(r, r, 4. + 0.01 * double((i * 7 + j * 3) % 5));
+      if(i > 0) entries.emplace_back(r, r - side, -1.);
+      if(j > 0) entries.emplace_back(r, r - 1, -1.);
+    }
+  Matrix lower(n, n);
+  lower.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd b(n);
+  for(int r = 0; r < n; ++r)
+    b(r) = std::sin(0.1 * r);
+  std::vector<int> order(static_cast<std::size_t>(n)); // every other row, then the rest
+  for(int k = 0; k < n; ++k)
+    order[std::size_t(k)] = k < n / 2 ? 2 * k : 2 * (k - n / 2) + 1;
+  Eigen::SimplicialLDLT<Matrix, Eigen::Lower> reference(lower);
+  const Eigen::VectorXd x = reference.solve(b);
+  SMP::internal::Ordered_ldlt ldlt;
+  ldlt.analyze(lower, order);
+  ldlt.factorize(lower);
+  SMP_CHECK(ldlt.info() == Eigen::Success && (ldlt.solve(b) - x).norm() < 1e-10 * x.norm(),
+            "Eigen's LDL^T in a given order solves otherwise");
+#if defined(CGAL_SMP_USE_CHOLMOD)
+  SMP::internal::Ordered_cholmod llt;
+  llt.analyze(lower, order);
+  llt.factorize(lower);
+  SMP_CHECK(llt.info() == Eigen::Success && (llt.solve(b) - x).norm() < 1e-10 * x.norm(),
+            "CHOLMOD's LL^T in a given order solves otherwise");
+  Matrix singular = lower;
+  for(int r = 0; r < n; ++r)
+    singular.coeffRef(r, r) = r == n / 3 ? -1. : singular.coeff(r, r);
+  llt.factorize(singular);
+  SMP_CHECK(llt.info() != Eigen::Success, "CHOLMOD's LL^T factored an indefinite matrix");
+#endif
+}
+
 // Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from
 // the symbolic estimate and then from the last factorization, hands memory back between steps
 // and frees its factors after each solve and after the call: the maps must be those of Eigen's
@@ -504,8 +558,8 @@ void check_large_system()
   std::cout << "207k vertices: U^1 " << p.report().kept().l2_stretch << ", SparseLU " << reference.report().kept().l2_stretch
             << ", max distance " << max_distance(m, uv1, uvr) << std::endl;
 
-  // symmetric weights on a large system: CHOLMOD's supernodal Cholesky where CHOLMOD is used,
-  // else UMFPACK; the same map as the LU of concept-only traits
+  // symmetric weights on a large system: the Cholesky in METIS's order of the vertices where
+  // CHOLMOD is used, else UMFPACK; the same map as the LU of concept-only traits
   namespace P = SMP::parameters;
   const auto lowest = P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH).descent_iterations(0u).number_of_iterations(1u);
   Default_smp symmetric(lowest);
@@ -515,6 +569,20 @@ void check_large_system()
   check_run("207k vertices, symmetric weights", m, l.bhd, symmetric, uvs, SMP::parameterize(m, symmetric, l.bhd, uvs));
   SMP_CHECK(SMP::parameterize(m, concept_lu, l.bhd, uvc) == SMP::OK, "207k vertices, symmetric weights by the LU");
   SMP_CHECK(max_distance(m, uvs, uvc) < 1e-9, "symmetric weights: Cholesky and LU differ by " << max_distance(m, uvs, uvc));
+#if defined(CGAL_SMP_USE_CHOLMOD)
+  { // the order shared by the systems: each vertex once
+    SMP::internal::Disk_component<Mesh> dc;
+    SMP_CHECK(dc.build(m, l.bhd, get(CGAL::vertex_point, m)) == SMP::OK, "207k vertices: no disk");
+    const std::vector<int> rank = SMP::internal::fill_reducing_vertex_rank(dc.flat.xyz.size(), dc.flat.tri, dc.virtual_tri);
+    std::vector<char> seen(rank.size(), 0);
+    bool permutation = rank.size() == dc.flat.xyz.size();
+    for(int r : rank) {
+      permutation = permutation && r >= 0 && std::size_t(r) < rank.size() && !seen[std::size_t(r)];
+      if(permutation) seen[std::size_t(r)] = 1;
+    }
+    SMP_CHECK(permutation, "207k vertices: the vertex order is not a permutation of the vertices");
+  }
+#endif
 
   // a plain Eigen::UmfPackLU given by the user, as the class documentation offers
   typedef CGAL::Eigen_solver_traits<Eigen::UmfPackLU<CGAL::Eigen_sparse_matrix<double>::EigenType> > Plain_umfpack;
@@ -790,6 +858,7 @@ int main()
   for(const char* name : {"three_peaks.off", "mannequin-devil.off", "head.off"})
     check_symmetric_weights(name);
   check_readme_tables();
+  check_ordered_solvers();
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
   check_umfpack_lu();
   check_large_system();

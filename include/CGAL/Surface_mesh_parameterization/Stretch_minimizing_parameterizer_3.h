@@ -132,9 +132,9 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///         Symmetric weights (the clamped cotangent start with the edge or symmetric update, as
 ///         `Stretch_minimizing_preset::LOWEST_STRETCH` sets) make the system symmetric positive
 ///         definite: a direct Eigen solver given here then gives way to a sparse Cholesky
-///         (Eigen's `SimplicialLDLT`, or CHOLMOD's with METIS on large systems when the package's
-///         macro `CGAL_SMP_USE_CHOLMOD` is defined), but for UMFPACK on large systems without
-///         CHOLMOD; the map is the same to rounding.
+///         (Eigen's `SimplicialLDLT`, in METIS's order of the vertices on large meshes when the
+///         package's macro `CGAL_SMP_USE_CHOLMOD` is defined), but for UMFPACK on large systems
+///         without CHOLMOD; the map is the same to rounding.
 ///
 /// \sa `CGAL::Surface_mesh_parameterization::Shape_preserving_parameterizer_3`
 /// \sa `CGAL::Surface_mesh_parameterization::Stretch_minimizing_report`
@@ -434,14 +434,19 @@ private:
     std::vector<internal::Vec2> best_uv;
     // the vertex update scales the columns of the weights: only the others keep them symmetric
     symmetric = symmetric && settings.update != Stretch_update::VERTEX;
-    const bool solved = iterate(dc, settings, start, symmetric, w, uv, best_uv, rep);
+    // one elimination order of the vertices for all the Cholesky factorizations of this call
+    typedef internal::Weighted_laplacian_system<Solver_traits> System;
+    const std::vector<int> rank = (symmetric && System::cholesky_possible) || settings.polish()
+                                    ? internal::fill_reducing_vertex_rank(dc.flat.xyz.size(), dc.flat.tri, dc.virtual_tri)
+                                    : std::vector<int>();
+    const bool solved = iterate(dc, settings, start, symmetric, rank, w, uv, best_uv, rep);
     internal::release_factors_of(m_solver_traits);
     if(!solved)
       return fail(ERROR_CANNOT_SOLVE_LINEAR_SYSTEM, "the sparse solver failed");
     if(best_uv.empty())
       return fail(ERROR_NO_1_TO_1_MAPPING, "the initial parameterization has flipped faces");
     if(settings.polish())
-      internal::polish_stage(dc, dc.vertices.size(), settings, start, best_uv, rep.polish);
+      internal::polish_stage(dc, dc.vertices.size(), rank, settings, start, best_uv, rep.polish);
     for(std::size_t v = 0; v < dc.vertices.size(); ++v) {
       put(uvmap, dc.vertices[v], Point_2(best_uv[v][0], best_uv[v][1]));
       put(vpmap, dc.vertices[v], true);
@@ -452,14 +457,14 @@ private:
 
   // Solves, measures and reweights until the rule of `settings` stops; `best_uv` receives the
   // best flip-free parameterization (empty if U^0 has flipped faces). False if a solve fails.
-  // `symmetric`: the weights are and stay symmetric.
+  // `symmetric`: the weights are and stay symmetric; `rank`: the elimination order of the vertices.
   bool iterate(const internal::Disk_component<Triangle_mesh>& dc,
                const internal::Stretch_minimizing_settings& settings,
-               std::chrono::steady_clock::time_point start, bool symmetric,
+               std::chrono::steady_clock::time_point start, bool symmetric, const std::vector<int>& rank,
                std::vector<double>& w, std::vector<internal::Vec2>& uv,
                std::vector<internal::Vec2>& best_uv, Stretch_minimizing_report& rep)
   {
-    internal::Weighted_laplacian_system<Solver_traits> system(dc, symmetric);
+    internal::Weighted_laplacian_system<Solver_traits> system(dc, symmetric, rank);
     internal::Flat_stretch stretch;
     internal::Stretch_update_ratios ratios;
     ratios.init(settings.update, dc);

@@ -36,6 +36,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/vertex_order.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
@@ -73,6 +74,9 @@ struct Sander_polish_settings
   double tolerance = 1e-6;    // converged when a step lowers the energy by less than this, relatively
   unsigned int threads = 1;   // of the stretch measured after each step and of the two systems of
                               // SPLIT_NEWTON (the result does not depend on it)
+  // the order in which the proxy and the split systems eliminate the vertices (rank per vertex,
+  // see vertex_order.h), shared by the calls on one mesh; null: ordered here
+  const std::vector<int>* vertex_rank = nullptr;
 };
 
 // What a visitor sees after every Newton step.
@@ -113,8 +117,8 @@ struct Sander_polish_result
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_polish_default_solver;
 
 // `Solver`: an Eigen sparse Cholesky solver reading the lower triangle, of the Newton system;
-// `VertexSolver`: the same for the proxy and the split systems, or a class with the interface
-// of Sander_vertex_solver.
+// `VertexSolver`: a class with the interface of Sander_vertex_solver (analyzePattern() and
+// compute() with an elimination order), for the proxy and the split systems.
 template <typename Solver = Sander_polish_default_solver, typename VertexSolver = Sander_vertex_solver>
 class Sander_energy_polisher
 {
@@ -150,6 +154,7 @@ public:
     std::string why;
     if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
       return fail(Sander_polish_status::BAD_START, why);
+    order_vertex_systems(m, guard, settings.vertex_rank);
     r.l2_before = r.l2_after = m_stretch.evaluate(m, uv, settings.threads).l2;
 
     // With holes, a free border or faces without energy (zero 3D area) the uv area of the
@@ -191,7 +196,7 @@ public:
       if(proxy) {
         if(!factored) {
           assemble_proxy();
-          m_proxy_solver.compute(m_P);
+          m_proxy_solver.compute(m_P, m_order);
           factored = true;
           if(m_proxy_solver.info() != Eigen::Success)
             return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the proxy failed");
@@ -391,6 +396,23 @@ private:
     return true;
   }
 
+  // m_order: the unknowns of the proxy and the split systems in the order of `rank`, or of the
+  // vertex rank computed here if there is none
+  void order_vertex_systems(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<int>* rank)
+  {
+    std::vector<int> vertex_of(m_dofs);
+    for(std::size_t v = 0; v < m_dof.size(); ++v)
+      if(m_dof[v] >= 0)
+        vertex_of[std::size_t(m_dof[v])] = int(v);
+    if(rank != nullptr) {
+      m_order = rows_in_order(*rank, vertex_of);
+    } else if(m_dofs >= nested_dissection_threshold) {
+      m_order = rows_in_order(fill_reducing_vertex_rank(m.xyz.size(), m.tri, guard), vertex_of);
+    } else {
+      m_order.clear();
+    }
+  }
+
   // The pattern of the lower triangle of the Newton system; every face keeps where its 6x6
   // block goes. Split: the pattern of one system of the vertices, the same for u and v, and
   // where the 3x3 block of each face goes.
@@ -448,7 +470,7 @@ private:
     parallel_for_each(2, (std::min)(threads, 2u), [&](std::size_t c) {
       VertexSolver& solver = m_split_solver[c];
       if(analyse)
-        solver.analyzePattern(m_Hs[c]);
+        solver.analyzePattern(m_Hs[c], m_order);
       solver.factorize(m_Hs[c]);
       if(solver.info() != Eigen::Success)
         return;
@@ -649,6 +671,7 @@ private:
   std::vector<Triangle> m_guard;           // faces without energy that must stay positive
   std::vector<int> m_border;
   std::vector<int> m_dof;                  // vertex -> unknown, -1 if it does not move
+  std::vector<int> m_order;                // unknowns in the elimination order of the vertex systems
   std::size_t m_dofs = 0;
   std::vector<int> m_slot;                 // 36 per energy face: entry of m_H, -1 if none (split: 9, of m_Hs)
   std::vector<Vec2> m_x, m_trial, m_dir, m_current;

@@ -18,22 +18,84 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <vector>
+
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
-// Eigen's SimplicialLDLT, or, when SuiteSparse is used and the system is large, CHOLMOD's with a
-// nested-dissection ordering (METIS), whose factor takes fewer flops than the minimum degree
-// ordering's on large meshes (the benchmark measures where).
+// Eigen's simplicial LDL^T, in its own minimum degree order or in an order given by rows
+// (vertex_order.h: one nested-dissection order for all the systems of a mesh).
+class Ordered_ldlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  // `order`: the rows, first eliminated first; empty: the minimum degree order
+  void analyze(const Matrix& lower, const std::vector<int>& order)
+  {
+    if(order.empty()) {
+      analyzePattern(lower);
+      return;
+    }
+    const Eigen::Index n = lower.rows();
+    m_P.resize(n);
+    for(Eigen::Index k = 0; k < n; ++k)
+      m_P.indices()[order[std::size_t(k)]] = int(k); // row -> place
+    m_Pinv = m_P.inverse();
+    CholMatrixType permuted(n, n);
+    permuted.selfadjointView<Eigen::Upper>() = lower.selfadjointView<Eigen::Lower>().twistedBy(m_P);
+    analyzePattern_preordered(permuted, true);
+  }
+};
+
+#if defined(CGAL_SMP_USE_CHOLMOD)
+// CHOLMOD's supernodal LL^T in an order given by rows (no ordering of its own).
+class Ordered_cholmod : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Ordered_cholmod>
+{
+public:
+  typedef Eigen::SparseMatrix<double> Matrix;
+
+  // `order`: the rows, first eliminated first
+  void analyze(const Matrix& lower, std::vector<int>& order)
+  {
+    if(m_cholmodFactor != nullptr) {
+      cholmod_free_factor(&m_cholmodFactor, &m_cholmod);
+      m_cholmodFactor = nullptr;
+    }
+    m_cholmod.print = 0; // its failure is handled by the caller, not printed
+    m_cholmod.nmethods = 1;
+    m_cholmod.method[0].ordering = CHOLMOD_GIVEN;
+    m_cholmod.postorder = 1;
+    m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
+    m_cholmod.final_ll = 1;
+    cholmod_sparse A = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
+    m_cholmodFactor = cholmod_analyze_p(&A, order.data(), nullptr, 0, &m_cholmod);
+    m_isInitialized = true;
+    m_info = m_cholmodFactor != nullptr ? Eigen::Success : Eigen::NumericalIssue;
+    m_analysisIsOk = m_cholmodFactor != nullptr;
+    m_factorizationIsOk = false;
+  }
+};
+#endif
+
+// The factorization of one system, analysed once (`analyzePattern`) and factored for each set of
+// values (`factorize`): Eigen's LDL^T, or, for the positive definite systems of the largest
+// meshes when SuiteSparse's CHOLMOD is used, its supernodal LL^T (through BLAS), in the same order.
 class Sander_vertex_solver
 {
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
-  static constexpr Eigen::Index large_threshold = 100000;
+#if defined(CGAL_SMP_USE_CHOLMOD)
+  // measured on the clamped cotangent system in a METIS order: Eigen's LDL^T is faster at 207k
+  // rows, CHOLMOD's supernodal LL^T at 829k
+  static constexpr Eigen::Index supernodal_threshold = 500000;
+#endif
 
-  // `definite`: the systems are positive definite, so CHOLMOD may take its supernodal LL^T (much
-  // faster than its LDL^T on the largest systems, through BLAS).
+  // `definite`: the systems are positive definite, so CHOLMOD's LL^T may factor them (an LL^T
+  // refuses the semidefinite systems whose smallest eigenvalues are at the floor of the projected
+  // Hessians, where the LDL^T factors them)
   explicit Sander_vertex_solver(bool definite = false)
 #if defined(CGAL_SMP_USE_CHOLMOD)
     : m_definite(definite)
@@ -42,55 +104,50 @@ public:
     static_cast<void>(definite);
   }
 
-  void analyzePattern(const Matrix& lower)
+  // `order`: the rows, first eliminated first (see vertex_order.h); empty: Eigen's minimum
+  // degree order
+  void analyzePattern(const Matrix& lower, const std::vector<int>& order = std::vector<int>())
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    m_large = lower.rows() >= large_threshold;
-    if(m_large) {
-      m_cholmod.cholmod().print = 0; // its failure is handled here, not printed
-      m_cholmod.cholmod().nmethods = 1;
-      m_cholmod.cholmod().method[0].ordering = CHOLMOD_METIS;
-      // else LDL^T, as Eigen's: a supernodal LL^T refuses the systems whose smallest
-      // eigenvalues are at the floor of the projected Hessians, where the LDL^T factors them
-      m_cholmod.cholmod().supernodal = m_definite ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
-      m_cholmod.cholmod().final_ll = m_definite ? 1 : 0;
-      m_cholmod.analyzePattern(lower);
+    m_supernodal = m_definite && !order.empty() && lower.rows() >= supernodal_threshold;
+    if(m_supernodal) {
+      m_order = order;
+      m_cholmod.analyze(lower, m_order);
       if(m_cholmod.info() == Eigen::Success)
         return;
-      m_large = false;
+      m_supernodal = false;
     }
 #endif
-    m_small.analyzePattern(lower);
+    m_ldlt.analyze(lower, order);
   }
 
   void factorize(const Matrix& lower)
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_large) {
+    if(m_supernodal) {
       m_cholmod.factorize(lower);
       if(m_cholmod.info() == Eigen::Success)
         return;
-      // a free border leaves the proxy singular (translations): CHOLMOD stops at its zero
-      // pivot, where Eigen's LDLT goes on (the line search copes with the free translation)
-      m_large = false;
-      m_small.analyzePattern(lower);
+      // not definite to working precision after all: the LDL^T, in the same order
+      m_supernodal = false;
+      m_ldlt.analyze(lower, m_order);
     }
 #endif
-    m_small.factorize(lower);
+    m_ldlt.factorize(lower);
   }
 
-  void compute(const Matrix& lower)
+  void compute(const Matrix& lower, const std::vector<int>& order = std::vector<int>())
   {
-    analyzePattern(lower);
+    analyzePattern(lower, order);
     factorize(lower);
   }
 
   Eigen::ComputationInfo info() const
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_large) return m_cholmod.info();
+    if(m_supernodal) return m_cholmod.info();
 #endif
-    return m_small.info();
+    return m_ldlt.info();
   }
 
   // one column or several
@@ -99,16 +156,17 @@ public:
   {
     typedef Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> Dense;
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_large) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
+    if(m_supernodal) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
 #endif
-    return m_small.solve(b);
+    return m_ldlt.solve(b);
   }
 
 private:
-  Eigen::SimplicialLDLT<Matrix, Eigen::Lower> m_small;
+  Ordered_ldlt m_ldlt;
 #if defined(CGAL_SMP_USE_CHOLMOD)
-  Eigen::CholmodDecomposition<Matrix, Eigen::Lower> m_cholmod;
-  bool m_large = false;
+  Ordered_cholmod m_cholmod;
+  std::vector<int> m_order; // CHOLMOD's, kept for an LDL^T in its place
+  bool m_supernodal = false;
   bool m_definite = false;
 #endif
 };

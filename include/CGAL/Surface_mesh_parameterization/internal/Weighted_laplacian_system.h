@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
+#include <CGAL/Surface_mesh_parameterization/internal/vertex_order.h>
 
 #include <Eigen/Dense>
 #include <Eigen/IterativeLinearSolvers>
@@ -31,7 +32,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // Symmetric weights (w_ij = w_ji between interior vertices) make the system without that
 // division symmetric positive definite: it is then factored by a sparse Cholesky (LDL^T) from
 // its lower triangle, a fraction of the cost of an LU, in place of the direct Eigen solver of
-// the traits (which still serves where it is the faster, see `cholesky_pays()`).
+// the traits (which still serves where it is the faster, see `cholesky_pays()`), in the
+// elimination order of the mesh's vertices when there is one (vertex_order.h).
 //
 // Only the weights change between steps, so the sparsity pattern is built once and analysed
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and
@@ -50,12 +52,16 @@ class Weighted_laplacian_system
   typedef typename Kind::Matrix                              Matrix;
 
 public:
-  // `symmetric`: the weights given to `solve()` are symmetric.
-  Weighted_laplacian_system(const Disk_component_base& dc, bool symmetric) : m_dc(dc)
+  // `symmetric`: the weights given to `solve()` are symmetric; `vertex_rank`: the elimination
+  // order of the vertices of `dc` (empty: the Cholesky's own).
+  Weighted_laplacian_system(const Disk_component_base& dc, bool symmetric, const std::vector<int>& vertex_rank)
+    : m_dc(dc)
   {
     const Eigen::Index n = Eigen::Index(dc.number_of_rows());
     if constexpr(cholesky_possible)
       m_cholesky = symmetric && cholesky_pays<typename Kind::Solver>(n);
+    if(m_cholesky)
+      m_order = rows_in_order(vertex_rank, dc.interior);
     std::vector<Eigen::Triplet<double> > entries;
     entries.reserve(dc.ring.size() + dc.interior.size());
     for(Eigen::Index i = 0; i < n; ++i) {
@@ -159,7 +165,10 @@ private:
   bool factor_and_solve(Solver& solver, std::vector<double>& w, const std::vector<Vec2>& uv, unsigned int threads)
   {
     if(!m_analysed) {
-      analyze_pattern(solver, m_A);
+      if constexpr(std::is_same<Solver, Sander_vertex_solver>::value)
+        solver.analyzePattern(m_A, m_order);
+      else
+        analyze_pattern(solver, m_A);
       m_analysed = true;
     }
     const bool hand_back = !m_repeated_neighbour;
@@ -249,13 +258,16 @@ private:
     return int(std::lower_bound(first, last, i) - m_A.innerIndexPtr());
   }
 
+public:
   // the Cholesky takes the place of direct Eigen solvers on the same matrix type
   static constexpr bool cholesky_possible =
     Kind::eigen && !Kind::iterative && std::is_same<Matrix, Sander_vertex_solver::Matrix>::value;
 
+private:
   const Disk_component_base& m_dc;
   bool m_cholesky = false;
   Sander_vertex_solver m_cholesky_solver{true}; // positive definite: the border holds it
+  std::vector<int> m_order; // the Cholesky's rows in elimination order, empty for its own
   Matrix m_A;
   std::vector<int> m_diag, m_slot; // positions in the value array (nonzeros fit an int, as Eigen's indices)
   std::vector<int> m_border_entries; // ring entries whose neighbour is on the border

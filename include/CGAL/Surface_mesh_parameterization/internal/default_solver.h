@@ -75,14 +75,15 @@ struct Solver_kind<Traits, std::void_t<typename Traits::Solver::MatrixType, decl
 
 // Whether a symmetric system of `n` unknowns is better factored by the package's sparse
 // Cholesky (`Sander_vertex_solver`) than by the direct Eigen solver `Solver`: yes, but for
-// UMFPACK's LU on a large system when CHOLMOD is not there (Eigen's simplicial LDL^T then
-// factors with more fill than UMFPACK's ordering gives).
+// UMFPACK's LU on a large system when CHOLMOD is not there (no METIS order for the Cholesky:
+// Eigen's simplicial LDL^T then factors in its minimum degree order, with more fill than
+// UMFPACK's METIS order gives; measured at 207k rows: 0.85 s against 0.50 s).
 template <typename Solver>
 bool cholesky_pays(Eigen::Index n)
 {
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS) && !defined(CGAL_SMP_USE_CHOLMOD)
   if constexpr(Is_umfpack<Solver>::value)
-    return n < Sander_vertex_solver::large_threshold;
+    return n < 100000;
 #endif
   static_cast<void>(n);
   return true;

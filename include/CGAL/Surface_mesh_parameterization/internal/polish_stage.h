@@ -184,9 +184,10 @@ constexpr double split_descent_tolerance = 2e-3;
 // Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps (along the
 // proxy, then projected Newton steps on u and v apart: cheap), then by projected Newton steps;
 // `uv` is left as it is if the polish cannot start. The vertices from `real_vertices` on are
-// the centres of the fans closing the holes.
+// the centres of the fans closing the holes. `vertex_rank`: the elimination order of the
+// vertices (vertex_order.h), empty for the solvers' own.
 inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertices,
-                         const Stretch_minimizing_settings& settings,
+                         const std::vector<int>& vertex_rank, const Stretch_minimizing_settings& settings,
                          std::chrono::steady_clock::time_point start, std::vector<Vec2>& uv,
                          Stretch_minimizing_polish& pol)
 {
@@ -233,6 +234,7 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
       ps.tolerance = split_descent_tolerance;
     ps.free_border = settings.free_border;
     ps.threads = thread_count(settings.threads);
+    ps.vertex_rank = &vertex_rank;
     // a time budget alone leaves the Newton steps uncapped
     ps.max_iterations = descent ? settings.descent_iterations
                       : settings.polish_iterations > 0 || settings.polish_seconds <= 0.

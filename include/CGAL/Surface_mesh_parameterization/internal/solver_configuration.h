@@ -7,8 +7,8 @@
 // Two macros choose the package's sparse solvers:
 // - CGAL_SMP_USE_SPARSESUITE_SOLVERS (CGAL's own, as in its ARAP and Orbifold Tutte
 //   parameterizers): the default solver is UMFPACK's LU (link UMFPACK);
-// - CGAL_SMP_USE_CHOLMOD: the polisher's large systems of the vertices (the proxy, the split
-//   Newton systems) are factored by CHOLMOD (link CHOLMOD).
+// - CGAL_SMP_USE_CHOLMOD: the Cholesky factorizations of the systems of one row per vertex
+//   take METIS's order (vertex_order.h), the largest definite ones CHOLMOD's LL^T (link CHOLMOD).
 // The package's CMake target defines each when it finds the library.
 //
 // A macro that changes what a class or function template is would let two translation units,
