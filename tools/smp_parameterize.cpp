@@ -104,7 +104,7 @@ Options parse(int argc, char** argv)
     ("update", po::value(&o.update)->value_name("U"), "stretch that divides the weights: vertex, symmetric or edge")
     ("rule", po::value(&o.rule)->value_name("R"), "when a step does not lower the stretch: stop or halve (eta)")
     ("descent", po::value(&o.descent)->value_name("N"),
-     "then at most N cheap descent steps of each kind on Sander's stretch energy (flip-free; default: the "
+     "then at most N cheap descent steps on Sander's stretch energy (flip-free; default: the "
      "preset's, 0 or 30)")
     ("polish", po::value(&o.polish)->value_name("N"), "then at most N Newton steps on Sander's stretch energy (flip-free)")
     ("polish-time", po::value(&o.polish_time)->value_name("S"), "time budget of the polish in seconds")

@@ -82,8 +82,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// Beyond the paper, named parameters choose other start weights, another stretch update and
 /// another rule for a step that does not help, and a polish after \f$ U^{opt} \f$ that lowers
 /// Sander's stretch energy directly and keeps every face positive, with the border fixed or free
-/// (then never crossing itself): cheap descent steps (along a fixed proxy, then projected Newton
-/// steps on u and v apart), then projected Newton steps. `Stretch_minimizing_preset::LOWEST_STRETCH`
+/// (then never crossing itself): cheap descent steps (projected Newton steps on u and v apart with
+/// the border fixed, along a fixed proxy with the border free), then projected Newton steps. `Stretch_minimizing_preset::LOWEST_STRETCH`
 /// sets the start, the update and the descent steps.
 ///
 /// The border, the initial weights and the solver are chosen through the template parameters;
@@ -226,14 +226,13 @@ public:
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{descent_iterations}
   ///     \cgalParamDescription{after \f$ U^{opt} \f$, descent steps of Sander's L2 stretch energy, flip-free
-  ///                           by construction of the line search, at most this many of each kind: first along
-  ///                           its gradient preconditioned by the cotangent Laplacian of the mesh (factored once:
-  ///                           a step costs far less than a reweighting step) while a step lowers the energy by
-  ///                           1% or more, then projected Newton steps without the terms of the Hessian that
-  ///                           couple u and v (two systems the size of the mesh, factored side by side: about a
-  ///                           quarter of the flops of a Newton step) while a step lowers it by 0.2% or more;
-  ///                           with `free_border(true)`, steps of the first kind only, until they converge
-  ///                           (0: none)}
+  ///                           by construction of the line search, at most this many: projected Newton steps
+  ///                           without the terms of the Hessian that couple u and v (two systems the size of
+  ///                           the mesh, factored side by side: about a quarter of the flops of a Newton step)
+  ///                           while a step lowers the energy by 0.2% or more; with `free_border(true)`, steps
+  ///                           along its gradient preconditioned by the cotangent Laplacian of the mesh
+  ///                           (factored once: a step costs far less than a reweighting step), until they
+  ///                           converge (0: none)}
   ///     \cgalParamType{unsigned int}
   ///     \cgalParamDefault{0 (`Stretch_minimizing_preset::LOWEST_STRETCH`: see there)}
   ///   \cgalParamNEnd

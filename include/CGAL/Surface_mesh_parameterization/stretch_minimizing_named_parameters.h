@@ -97,7 +97,7 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 /// | `stretch_update` | the stretch that divides the weights: a `Stretch_update` |
 /// | `step_rule` | what to do when a step does not decrease the stretch: a `Step_rule` |
 /// | `preset` | a set of options: a `Stretch_minimizing_preset` |
-/// | `descent_iterations` | cap on each kind of descent step of the polish stage (along a proxy, then Newton steps on u and v apart), before its Newton steps (0: none) |
+/// | `descent_iterations` | cap on the descent steps of the polish stage (Newton steps on u and v apart with a fixed border, along a proxy with a free one), before its Newton steps (0: none) |
 /// | `polish_iterations` | cap on the Newton steps of the polish stage (0: none) |
 /// | `polish_time_budget` | time budget of the polish stage in seconds (0: none) |
 /// | `free_border` | if `true`, the polish stage frees the border |
