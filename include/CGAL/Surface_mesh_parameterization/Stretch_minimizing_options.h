@@ -52,7 +52,7 @@ enum class Stretch_minimizing_preset
   /// `Start_weights::CLAMPED_COTANGENT`, `Stretch_update::EDGE`, `Step_rule::STOP_AT_INCREASE`,
   /// \f$ \eta = 1 \f$, then at most `lowest_stretch_descent_iterations` descent steps of the
   /// polish stage (`descent_iterations`): a stretch close to the lowest the border allows, for
-  /// two to four times the time of `PAPER` up to a few hundred thousand vertices and more above
+  /// one to three times the time of `PAPER` up to a few hundred thousand vertices and more above
   /// (the manual's benchmark), still no flipped face with a convex border.
   LOWEST_STRETCH
 };
