@@ -83,8 +83,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// another rule for a step that does not help, and a polish after \f$ U^{opt} \f$ that lowers
 /// Sander's stretch energy directly and keeps every face positive, with the border fixed or free
 /// (then never crossing itself): cheap descent steps (projected Newton steps on u and v apart with
-/// the border fixed, along a fixed proxy with the border free), then projected Newton steps. `Stretch_minimizing_preset::LOWEST_STRETCH`
-/// sets the start, the update and the descent steps.
+/// the border fixed, along a fixed proxy with the border free), then projected Newton steps.
+/// `Stretch_minimizing_preset::LOWEST_STRETCH` sets the start, the update and the descent steps.
 ///
 /// The border, the initial weights and the solver are chosen through the template parameters;
 /// options are named parameters given to the constructor (`CGAL::Surface_mesh_parameterization::parameterize()`

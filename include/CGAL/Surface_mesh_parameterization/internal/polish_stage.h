@@ -175,10 +175,9 @@ inline void fit_in_unit_square(std::vector<Vec2>& uv)
 // lowers the energy by at least `split_descent_tolerance` relatively: past that each step gains
 // little more, where the Newton steps (polish_iterations) go on to the optimum. (Steps along the
 // proxy first, while they gained 1%, ended higher on most meshes measured: from U^opt, the
-// proxy's first step is cut short by a fold.) With a
-// free border, steps along the proxy only, to the polisher's tolerance: on the charts of the
-// atlas (a circle's U^opt, then a free border) the split steps cost more flattening time than the
-// seams they saved.
+// proxy's first step is cut short by a fold.) With a free border, steps along the proxy only, to
+// the polisher's tolerance: on the charts of the atlas (a circle's U^opt, then a free border) the
+// split steps cost more flattening time than the seams they saved.
 constexpr double split_descent_tolerance = 2e-3;
 
 // Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps (projected Newton
