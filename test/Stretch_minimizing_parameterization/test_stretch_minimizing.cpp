@@ -420,6 +420,51 @@ void check_symmetric_weights(const std::string& name)
                  << hc.size() << " steps, maps " << max_distance(l.mesh, a, b) << " apart)");
 }
 
+// The Cholesky factorizations of Sander_vertex_solver in a given order (Eigen's LDL^T, and
+// CHOLMOD's supernodal LL^T, which it takes for the definite systems of the largest meshes)
+// against Eigen's LDL^T in its own order, on a grid Laplacian with its border fixed; the LL^T
+// refuses a semidefinite system (which the solver then gives to the LDL^T).
+void check_ordered_solvers()
+{
+  typedef Eigen::SparseMatrix<double> Matrix;
+  const int side = 40, n = side * side;
+  std::vector<Eigen::Triplet<double> > entries;
+  for(int i = 0; i < side; ++i)
+    for(int j = 0; j < side; ++j) {
+      const int r = i * side + j;
+      entries.emplace_back(r, r, 4. + 0.01 * double((i * 7 + j * 3) % 5));
+      if(i > 0) entries.emplace_back(r, r - side, -1.);
+      if(j > 0) entries.emplace_back(r, r - 1, -1.);
+    }
+  Matrix lower(n, n);
+  lower.setFromTriplets(entries.begin(), entries.end());
+  Eigen::VectorXd b(n);
+  for(int r = 0; r < n; ++r)
+    b(r) = std::sin(0.1 * r);
+  std::vector<int> order(static_cast<std::size_t>(n)); // every other row, then the rest
+  for(int k = 0; k < n; ++k)
+    order[std::size_t(k)] = k < n / 2 ? 2 * k : 2 * (k - n / 2) + 1;
+  Eigen::SimplicialLDLT<Matrix, Eigen::Lower> reference(lower);
+  const Eigen::VectorXd x = reference.solve(b);
+  SMP::internal::Ordered_ldlt ldlt;
+  ldlt.analyze(lower, order);
+  ldlt.factorize(lower);
+  SMP_CHECK(ldlt.info() == Eigen::Success && (ldlt.solve(b) - x).norm() < 1e-10 * x.norm(),
+            "Eigen's LDL^T in a given order solves otherwise");
+#if defined(CGAL_SMP_USE_CHOLMOD)
+  SMP::internal::Ordered_cholmod llt;
+  llt.analyze(lower, order);
+  llt.factorize(lower);
+  SMP_CHECK(llt.info() == Eigen::Success && (llt.solve(b) - x).norm() < 1e-10 * x.norm(),
+            "CHOLMOD's LL^T in a given order solves otherwise");
+  Matrix singular = lower;
+  for(int r = 0; r < n; ++r)
+    singular.coeffRef(r, r) = r == n / 3 ? -1. : singular.coeff(r, r);
+  llt.factorize(singular);
+  SMP_CHECK(llt.info() != Eigen::Success, "CHOLMOD's LL^T factored an indefinite matrix");
+#endif
+}
+
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 // The package's UMFPACK wrapper through CGAL's solver traits, as a user would call it: an
 // uncompressed matrix, a solve checked against Eigen's SparseLU, and a singular matrix refused.
@@ -486,51 +531,6 @@ void check_umfpack_lu()
             "UMFPACK's 64-bit interface solves one column otherwise");
   wide.compute(S.eigen_object());
   SMP_CHECK(wide.info() != Eigen::Success, "a singular matrix was factored by the 64-bit interface");
-}
-
-// The Cholesky factorizations of Sander_vertex_solver in a given order (Eigen's LDL^T, and
-// CHOLMOD's supernodal LL^T, which it takes for the definite systems of the largest meshes)
-// against Eigen's LDL^T in its own order, on a grid Laplacian with its border fixed; the LL^T
-// refuses a semidefinite system (which the solver then gives to the LDL^T).
-void check_ordered_solvers()
-{
-  typedef Eigen::SparseMatrix<double> Matrix;
-  const int side = 40, n = side * side;
-  std::vector<Eigen::Triplet<double> > entries;
-  for(int i = 0; i < side; ++i)
-    for(int j = 0; j < side; ++j) {
-      const int r = i * side + j;
-      entries.emplace_back(r, r, 4. + 0.01 * double((i * 7 + j * 3) % 5));
-      if(i > 0) entries.emplace_back(r, r - side, -1.);
-      if(j > 0) entries.emplace_back(r, r - 1, -1.);
-    }
-  Matrix lower(n, n);
-  lower.setFromTriplets(entries.begin(), entries.end());
-  Eigen::VectorXd b(n);
-  for(int r = 0; r < n; ++r)
-    b(r) = std::sin(0.1 * r);
-  std::vector<int> order(static_cast<std::size_t>(n)); // every other row, then the rest
-  for(int k = 0; k < n; ++k)
-    order[std::size_t(k)] = k < n / 2 ? 2 * k : 2 * (k - n / 2) + 1;
-  Eigen::SimplicialLDLT<Matrix, Eigen::Lower> reference(lower);
-  const Eigen::VectorXd x = reference.solve(b);
-  SMP::internal::Ordered_ldlt ldlt;
-  ldlt.analyze(lower, order);
-  ldlt.factorize(lower);
-  SMP_CHECK(ldlt.info() == Eigen::Success && (ldlt.solve(b) - x).norm() < 1e-10 * x.norm(),
-            "Eigen's LDL^T in a given order solves otherwise");
-#if defined(CGAL_SMP_USE_CHOLMOD)
-  SMP::internal::Ordered_cholmod llt;
-  llt.analyze(lower, order);
-  llt.factorize(lower);
-  SMP_CHECK(llt.info() == Eigen::Success && (llt.solve(b) - x).norm() < 1e-10 * x.norm(),
-            "CHOLMOD's LL^T in a given order solves otherwise");
-  Matrix singular = lower;
-  for(int r = 0; r < n; ++r)
-    singular.coeffRef(r, r) = r == n / 3 ? -1. : singular.coeff(r, r);
-  llt.factorize(singular);
-  SMP_CHECK(llt.info() != Eigen::Success, "CHOLMOD's LL^T factored an indefinite matrix");
-#endif
 }
 
 // Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from
