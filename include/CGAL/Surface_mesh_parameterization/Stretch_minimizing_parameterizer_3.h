@@ -433,9 +433,10 @@ private:
     std::vector<internal::Vec2> best_uv;
     // the vertex update scales the columns of the weights: only the others keep them symmetric
     symmetric = symmetric && settings.update != Stretch_update::VERTEX;
-    // one elimination order of the vertices for all the Cholesky factorizations of this call
+    // one elimination order of the vertices for all the Cholesky factorizations of this call of
+    // one row per vertex (the symmetric reweighting systems, the descent's systems)
     typedef internal::Weighted_laplacian_system<Solver_traits> System;
-    const std::vector<int> rank = (symmetric && System::cholesky_possible) || settings.polish()
+    const std::vector<int> rank = (symmetric && System::cholesky_possible) || settings.descent_iterations > 0
                                     ? internal::fill_reducing_vertex_rank(dc.flat.xyz.size(), dc.flat.tri, dc.virtual_tri)
                                     : std::vector<int>();
     const bool solved = iterate(dc, settings, start, symmetric, rank, w, uv, best_uv, rep);

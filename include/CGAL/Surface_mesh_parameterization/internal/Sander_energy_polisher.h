@@ -154,7 +154,8 @@ public:
     std::string why;
     if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
       return fail(Sander_polish_status::BAD_START, why);
-    order_vertex_systems(m, guard, settings.vertex_rank);
+    if(settings.direction != Sander_polish_direction::NEWTON) // the Newton system orders itself
+      order_vertex_systems(m, guard, settings.vertex_rank);
     r.l2_before = r.l2_after = m_stretch.evaluate(m, uv, settings.threads).l2;
 
     // With holes, a free border or faces without energy (zero 3D area) the uv area of the

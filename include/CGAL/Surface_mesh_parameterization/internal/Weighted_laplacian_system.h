@@ -52,6 +52,10 @@ class Weighted_laplacian_system
   typedef typename Kind::Matrix                              Matrix;
 
 public:
+  // the Cholesky takes the place of direct Eigen solvers on the same matrix type
+  static constexpr bool cholesky_possible =
+    Kind::eigen && !Kind::iterative && std::is_same<Matrix, Sander_vertex_solver::Matrix>::value;
+
   // `symmetric`: the weights given to `solve()` are symmetric; `vertex_rank`: the elimination
   // order of the vertices of `dc` (empty: the Cholesky's own).
   Weighted_laplacian_system(const Disk_component_base& dc, bool symmetric, const std::vector<int>& vertex_rank)
@@ -258,12 +262,6 @@ private:
     return int(std::lower_bound(first, last, i) - m_A.innerIndexPtr());
   }
 
-public:
-  // the Cholesky takes the place of direct Eigen solvers on the same matrix type
-  static constexpr bool cholesky_possible =
-    Kind::eigen && !Kind::iterative && std::is_same<Matrix, Sander_vertex_solver::Matrix>::value;
-
-private:
   const Disk_component_base& m_dc;
   bool m_cholesky = false;
   Sander_vertex_solver m_cholesky_solver{true}; // positive definite: the border holds it

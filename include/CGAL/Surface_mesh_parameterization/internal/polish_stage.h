@@ -182,10 +182,10 @@ constexpr double split_descent_tolerance = 2e-3;
 
 // Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps (projected Newton
 // steps on u and v apart with a fixed border, along the proxy with a free one: cheap), then by
-// projected Newton steps;
-// `uv` is left as it is if the polish cannot start. The vertices from `real_vertices` on are
-// the centres of the fans closing the holes. `vertex_rank`: the elimination order of the
-// vertices (vertex_order.h), empty for the solvers' own.
+// projected Newton steps; `uv` is left as it is if the polish cannot start. The vertices from
+// `real_vertices` on are the centres of the fans closing the holes. `vertex_rank`: the
+// elimination order of the vertices for the descent's systems (vertex_order.h), empty for the
+// solvers' own.
 inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertices,
                          const std::vector<int>& vertex_rank, const Stretch_minimizing_settings& settings,
                          std::chrono::steady_clock::time_point start, std::vector<Vec2>& uv,
