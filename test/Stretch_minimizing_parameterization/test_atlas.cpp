@@ -983,6 +983,84 @@ void thread_independence()
   }
 }
 
+// The triangles over a loop (a large polygon of the soup, a hole filled in a chart): n - 2 of
+// them, each side of the loop in one of them in the loop's direction, each new side in two, in
+// opposite directions, none refused; the same triangles again after other allocations. Loops of
+// each kind: planar (CGAL's constrained Delaunay triangulation), small and far from planar
+// (CGAL's exhaustive search), large and far from planar (ear clipping), some with a diagonal
+// refused; and ear clipping alone on planar stars, where no triangle may be turned against the
+// loop (the sharpest tips are cut first).
+void loop_triangulations()
+{
+  namespace I = SMP::internal;
+  auto wavy = [](int n, double amplitude, double spikes) {
+    std::vector<I::Vec3> p;
+    for(int i = 0; i < n; ++i) {
+      const double a = 2. * CGAL_PI * i / n, r = spikes > 0. && i % 2 ? 1. / spikes : 1.;
+      p.push_back({r * std::cos(a), r * std::sin(a), amplitude * std::sin(3. * a)});
+    }
+    return p;
+  };
+  struct Case { std::vector<I::Vec3> p; int refused_a, refused_b; bool ears_only; };
+  const std::vector<Case> cases = {
+      {wavy(10, 0., 0.), -1, -1, false},  {wavy(200, 0., 3.), -1, -1, false}, {wavy(20, 2., 0.), -1, -1, false},
+      {wavy(12, 2., 0.), 0, 6, false},     {wavy(300, 2., 0.), -1, -1, false}, {wavy(100, 2., 0.), 0, 50, false},
+      {wavy(301, 0., 4.), -1, -1, true},   {wavy(40, 0., 1.5), -1, -1, true}};
+  for(std::size_t c = 0; c < cases.size(); ++c) {
+    const Case& k = cases[c];
+    const int n = int(k.p.size());
+    auto allowed = [&k](int a, int b) { return !((a == k.refused_a && b == k.refused_b) || (a == k.refused_b && b == k.refused_a)); };
+    auto triangulate = [&](std::vector<I::Loop_triangle>& t) {
+      return k.ears_only ? I::clip_ears(k.p, allowed, t) : I::triangulate_loop(k.p, allowed, t);
+    };
+    std::vector<I::Loop_triangle> t, again;
+    const bool ok = triangulate(t);
+    std::vector<std::vector<double> > in_use(100, std::vector<double>(77));
+    triangulate(again);
+    std::map<std::pair<int, int>, int> directed;
+    bool refused = false, turned = false;
+    for(const I::Loop_triangle& q : t) {
+      const I::Vec3 normal = I::cross3(I::sub3(k.p[std::size_t(q[1])], k.p[std::size_t(q[0])]), I::sub3(k.p[std::size_t(q[2])], k.p[std::size_t(q[0])]));
+      turned = turned || (k.p[0][2] == 0. && k.p[1][2] == 0. && normal[2] <= 0.); // planar loops
+      for(std::size_t j = 0; j < 3; ++j) {
+        const int a = q[j], b = q[(j + 1) % 3];
+        ++directed[{a, b}];
+        refused = refused || ((a + 1) % n != b && (b + 1) % n != a && !allowed(a, b));
+      }
+    }
+    bool sides = true;
+    for(const auto& e : directed) {
+      const int a = e.first.first, b = e.first.second;
+      const bool side = (a + 1) % n == b, back = directed.count({b, a}) == 1;
+      sides = sides && e.second == 1 && side != back;
+    }
+    for(int i = 0; i < n; ++i)
+      sides = sides && directed.count({i, (i + 1) % n}) == 1;
+    SMP_CHECK(ok && t.size() == std::size_t(n - 2) && sides && !refused && !turned && t == again,
+              "loop " << c << " of " << n << " points: " << t.size() << " triangles, sides " << sides << ", refused " << refused
+                      << ", turned " << turned << ", again the same " << (t == again));
+  }
+}
+
+// The atlas depends on the soup and the options only, not on what the process did before:
+// called again with other memory in use, it is the same bit for bit. CGAL's sample cheese
+// (a block of genus 133) has charts around its holes, whose guard triangles
+// came from a hole filling through a 3D Delaunay triangulation that depends on where its cells
+// lie in memory (CGAL 5.5.1): calls gave different atlases.
+void call_independence()
+{
+  const Soup s = read("cheese.off");
+  const SMP::Atlas first = SMP::make_atlas(s.points, s.polygons, SMP::parameters::number_of_threads(1u));
+  std::vector<std::vector<double> > in_use;
+  for(int call = 1; call < 5; ++call) {
+    for(int k = 0; k < 300; ++k)
+      in_use.emplace_back(std::size_t((k * 7919 + call * 31) % 700 + 8));
+    const SMP::Atlas again = SMP::make_atlas(s.points, s.polygons, SMP::parameters::number_of_threads(1u));
+    SMP_CHECK(again.uv == first.uv && again.chart == first.chart,
+              "cheese.off: call " << call << " gives another atlas than the first");
+  }
+}
+
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
 // two corners) has no triangle to chart; its polygons are still in a chart that exists.
 void only_flat_polygons()
@@ -1109,6 +1187,8 @@ int main(int argc, char** argv)
   holes_without_seams();
   cone_slits();
   thread_independence();
+  loop_triangulations();
+  call_independence();
   parts_count();
   detached_pieces();
   growing_taken_back();

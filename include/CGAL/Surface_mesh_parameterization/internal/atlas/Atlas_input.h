@@ -8,10 +8,10 @@
 // back to the input's polygons and corners. Nothing is repaired in place: the input's vertex
 // positions and polygon order are what the uv corners are written for.
 
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/triangulate_loop.h>
 #include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/number_utils.h>
 
 #include <algorithm>
 #include <array>
@@ -21,7 +21,6 @@
 #include <map>
 #include <set>
 #include <string>
-#include <tuple>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -56,8 +55,7 @@ struct Edge_hash
 };
 
 // Splits one polygon (its corners already welded, consecutive repeats removed) into triangles
-// of corner indices: a quad along its shorter diagonal, larger polygons by CGAL's minimal-area
-// hole triangulation, a fan if that fails.
+// of corner indices: a quad along its shorter diagonal, larger polygons by triangulate_loop().
 inline void triangulate_polygon(const std::vector<Vec3>& p, std::vector<std::array<int, 3> >& out)
 {
   out.clear();
@@ -77,19 +75,7 @@ inline void triangulate_polygon(const std::vector<Vec3>& p, std::vector<std::arr
     }
     return;
   }
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  std::vector<K::Point_3> polyline;
-  for(const Vec3& q : p)
-    polyline.emplace_back(q[0], q[1], q[2]);
-  std::vector<std::tuple<int, int, int> > triples;
-  CGAL::Polygon_mesh_processing::triangulate_hole_polyline(polyline, std::back_inserter(triples));
-  for(const auto& t : triples)
-    out.push_back({std::get<0>(t), std::get<1>(t), std::get<2>(t)});
-  if(out.size() != std::size_t(n - 2)) {
-    out.clear();
-    for(int k = 1; k + 1 < n; ++k)
-      out.push_back({0, k, k + 1});
-  }
+  triangulate_loop(p, [](int, int) { return true; }, out);
 }
 
 // Whether a triangle (in the scaled coordinates, the largest in [1/2, 1)) is too small for its

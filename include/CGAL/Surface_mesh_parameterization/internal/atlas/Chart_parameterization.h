@@ -19,8 +19,8 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/triangulate_loop.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
-#include <CGAL/Surface_mesh_parameterization/internal/hole_filling_compatibility.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -302,23 +302,35 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
     return false;
   holes = true;
   const Chart_halfedge bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
-  for(Chart_halfedge h : loops) {
-    bool outer = false;
-    for(Chart_halfedge b : halfedges_around_face(h, sm))
-      outer = outer || b == bhd;
-    std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
-    if(!outer && (fill_hole_by_delaunay(sm, h, std::back_inserter(filler)), filler.empty()))
-      return false;
-  }
   std::vector<Triangle> guard;
-  for(auto f : faces(sm))
-    if(std::size_t(f) >= flat.tri.size()) {
-      Triangle t;
-      int k = 0;
-      for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
-        t[std::size_t(k++)] = int(v);
-      guard.push_back(t);
+  for(Chart_halfedge h : loops) {
+    std::vector<Chart_vertex> loop;
+    bool outer = false;
+    for(Chart_halfedge b : halfedges_around_face(h, sm)) {
+      outer = outer || b == bhd;
+      loop.push_back(target(b, sm));
     }
+    if(outer)
+      continue;
+    std::vector<Vec3> points;
+    for(Chart_vertex v : loop)
+      points.push_back(flat.xyz[std::size_t(v)]);
+    // a new side may not be an edge of the chart already (nor join a vertex to itself, where
+    // the loop passes twice)
+    const auto allowed = [&](int a, int b) {
+      const Chart_vertex va = loop[std::size_t(a)], vb = loop[std::size_t(b)];
+      return va != vb && !halfedge(va, vb, sm).second;
+    };
+    std::vector<Loop_triangle> filler;
+    if(!triangulate_loop(points, allowed, filler))
+      return false;
+    for(const Loop_triangle& t : filler) {
+      const Chart_vertex a = loop[std::size_t(t[0])], b = loop[std::size_t(t[1])], c = loop[std::size_t(t[2])];
+      if(sm.add_face(a, b, c) == Chart_mesh::null_face())
+        return false;
+      guard.push_back({int(a), int(b), int(c)});
+    }
+  }
   return flatten_from_conformal(sm, bhd, flat, guard, settings, uv);
 }
 
