@@ -30,9 +30,11 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -114,23 +116,70 @@ inline Chart_areas chart_areas(const Chart_map& chart)
   return a;
 }
 
-// The value of `along` (one per triangle of `chart`) that halves the chart's surface area.
-inline double area_median(const std::vector<double>& along, const Flat_triangles& chart)
+// Where a chart is cut across its length: a value of `along` (one per triangle of `chart`, its
+// position along the chart's long side), the triangles below it on one side. Of the values
+// that leave between 30% and 70% of the surface area on each side, the one whose cut (the
+// edges between the two sides) is shortest, its length weighed by 1 + 2 |share - 1/2|: a waist
+// of the chart is taken if it is enough shorter than the middle to be worth uneven halves (the
+// larger of which may need a cut of its own); a strip of even width is cut in its middle.
+inline double cut_position(const std::vector<double>& along, const Flat_triangles& chart)
 {
-  std::vector<std::pair<double, double> > v(along.size()); // (position, area)
+  const std::size_t n = along.size();
+  std::vector<std::pair<double, double> > v(n); // (position, area)
   double total = 0.;
-  for(std::size_t i = 0; i < along.size(); ++i) {
+  for(std::size_t i = 0; i < n; ++i) {
     const Triangle& t = chart.tri[i];
     v[i] = {along[i], triangle_area(chart.xyz[t[0]], chart.xyz[t[1]], chart.xyz[t[2]])};
     total += v[i].second;
   }
+  if(n == 0)
+    return 0.;
   std::sort(v.begin(), v.end());
-  double sum = 0.;
-  for(const auto& e : v) {
-    sum += e.second;
-    if(sum >= 0.5 * total) return e.first;
+  // the edges inside the chart, each cut by the positions in (low, high]: the cut at t is as
+  // long as the edges with low < t less those with high < t
+  std::unordered_map<std::pair<int, int>, std::size_t, Edge_hash> first; // edge -> a triangle it bounds
+  std::vector<std::pair<double, double> > low, high;                      // (position, edge length)
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t k = 0; k < 3; ++k) {
+      const int a = chart.tri[i][k], b = chart.tri[i][(k + 1) % 3];
+      const std::size_t j = first.emplace(std::make_pair((std::min)(a, b), (std::max)(a, b)), i).first->second;
+      if(j == i)
+        continue;
+      const double length = norm3(sub3(chart.xyz[std::size_t(a)], chart.xyz[std::size_t(b)]));
+      low.emplace_back((std::min)(along[i], along[j]), length);
+      high.emplace_back((std::max)(along[i], along[j]), length);
+    }
+  const auto prefix = [](std::vector<std::pair<double, double> >& e) {
+    std::sort(e.begin(), e.end());
+    double sum = 0.;
+    for(auto& x : e) x.second = sum += x.second;
+  };
+  prefix(low);
+  prefix(high);
+  const auto below = [](const std::vector<std::pair<double, double> >& e, double t) { // length of edges at < t
+    const auto it = std::lower_bound(e.begin(), e.end(), std::make_pair(t, -HUGE_VAL));
+    return it == e.begin() ? 0. : std::prev(it)->second;
+  };
+  // without a position in that range (a few triangles of unequal areas): the area median
+  double median = v.back().first, best = median, best_cost = HUGE_VAL, sum = 0.;
+  bool past_median = false;
+  for(std::size_t i = 0; i < n; sum += v[i++].second) {
+    if(!past_median && sum + v[i].second >= 0.5 * total) {
+      median = v[i].first;
+      past_median = true;
+    }
+    if(i > 0 && v[i].first == v[i - 1].first)
+      continue; // the triangles below a position are those before its first
+    const double share = total > 0. ? sum / total : double(i) / double(n);
+    if(share < 0.3 || share > 0.7)
+      continue;
+    const double cost = (below(low, v[i].first) - below(high, v[i].first)) * (1. + 2. * std::abs(share - 0.5));
+    if(cost < best_cost) {
+      best = v[i].first;
+      best_cost = cost;
+    }
   }
-  return v.empty() ? 0. : v.back().first;
+  return best_cost < HUGE_VAL ? best : median;
 }
 
 // The packed charts (`uv`, one per chart of `kept`) measured as one map, a triangle of each
@@ -234,12 +283,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     charts[c] = Chart_map();
     return true;
   };
-  // cuts flattened chart c across the middle of its long side (a short seam)
+  // cuts flattened chart c across its long side, at its narrowest waist about the middle
   auto cut_across = [&](std::size_t c, const std::vector<double>& along) {
-    const double middle = area_median(along, charts[c].flat);
+    const double at = cut_position(along, charts[c].flat);
     std::vector<int> half(along.size());
     for(std::size_t i = 0; i < along.size(); ++i)
-      half[i] = along[i] < middle ? 0 : 1;
+      half[i] = along[i] < at ? 0 : 1;
     return split(c, half, 2);
   };
   // a flattened chart c above the bound is cut in two across its length, or, far above it,
