@@ -45,7 +45,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///
 /// Every polygon gets a uv for each of its corners and a chart, the polygons of fewer than
 /// three distinct positions too (with zero uv area). The triangles of one polygon stay in one
-/// chart.
+/// chart. The atlas depends on the soup and the options only: another call, in this process
+/// or another, on any number of threads, gives the same one, bit for bit.
 ///
 /// \tparam PointRange a range of 3D points (`x()`, `y()`, `z()`)
 /// \tparam PolygonRange a range of ranges of vertex indices
