@@ -21,6 +21,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/triangulate_loop.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/hole_filling_compatibility.h>
 
 #include <CGAL/Eigen_matrix.h>
 #include <CGAL/Eigen_solver_traits.h>
@@ -287,10 +288,11 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
 }
 
 // `sm`, the faces of `flat` in their order, flattened from LSCM's map of it with every hole but
-// the longest border filled by CGAL's hole filling, the fillers kept as guards through the
-// polish (the holes stay open and nothing enters them): `uv` per vertex of `flat`. False if `sm`
-// is not a surface of genus 0 with holes (`holes` false, `sm` unchanged), or a hole cannot be
-// filled, or LSCM's map is no bijection.
+// the longest border filled (by CGAL's hole filling, which adds no edge the chart has, up to
+// exhaustive_loop_size vertices; by triangulate_loop() beyond), the fillers kept as guards
+// through the polish (the holes stay open and nothing enters them): `uv` per vertex of `flat`.
+// False if `sm` is not a surface of genus 0 with holes (`holes` false, `sm` unchanged), or a
+// hole cannot be filled, or LSCM's map is no bijection.
 inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Chart_parameterization_settings& settings,
                           std::vector<Vec2>& uv, bool& holes)
 {
@@ -312,6 +314,20 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
     }
     if(outer)
       continue;
+    if(loop.size() <= exhaustive_loop_size) {
+      std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
+      fill_hole_exhaustively(sm, h, std::back_inserter(filler));
+      if(filler.empty())
+        return false;
+      for(auto f : filler) {
+        Triangle t;
+        int k = 0;
+        for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
+          t[std::size_t(k++)] = int(v);
+        guard.push_back(t);
+      }
+      continue;
+    }
     std::vector<Vec3> points;
     for(Chart_vertex v : loop)
       points.push_back(flat.xyz[std::size_t(v)]);

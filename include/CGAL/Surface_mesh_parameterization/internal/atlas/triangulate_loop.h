@@ -63,6 +63,8 @@ bool clip_ears(const std::vector<Vec3>& p, const Allowed& allowed, std::vector<L
     const Vec3& o = p[std::size_t(i)];
     const Vec3 a = sub3(p[std::size_t(before[std::size_t(i)])], o), b = sub3(p[std::size_t(after[std::size_t(i)])], o);
     const double angle = angle3(a, b);
+    if(!std::isfinite(angle)) // an overflow: last (the ears' order needs comparable keys)
+      return 2. * CGAL_PI;
     return dot3(cross3(b, a), normal) < 0. ? 2. * CGAL_PI - angle : angle;
   };
   typedef std::pair<double, int> Ear; // inner angle, position

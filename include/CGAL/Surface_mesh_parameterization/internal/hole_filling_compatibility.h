@@ -1,0 +1,41 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_HOLE_FILLING_COMPATIBILITY_H
+#define CGAL_SMP_INTERNAL_HOLE_FILLING_COMPATIBILITY_H
+
+// CGAL 5.6 gives triangulate_hole() its new faces through the named parameter
+// `face_output_iterator` and deprecates the output iterator argument, which CGAL 5.5 alone
+// has: the package calls this, right on both.
+
+#include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/version.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// Fills the hole of `border` (a 2D constrained Delaunay triangulation if it is nearly planar,
+// else the search over all triangulations, cubic in the hole's size, whose result depends on
+// the hole alone: not the search through a 3D Delaunay triangulation, whose result depends on
+// where that triangulation's cells lie in memory), and writes the new faces to `out`. Unlike a
+// triangulation of the border's points alone, the search never adds an edge the mesh has.
+template <typename PolygonMesh, typename OutputIterator>
+void fill_hole_exhaustively(PolygonMesh& mesh, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border,
+                            OutputIterator out)
+{
+  const auto np = CGAL::parameters::use_2d_constrained_delaunay_triangulation(true).use_delaunay_triangulation(false);
+#if CGAL_VERSION_NR >= 1050601000
+  CGAL::Polygon_mesh_processing::triangulate_hole(mesh, border, np.face_output_iterator(out));
+#else
+  CGAL::Polygon_mesh_processing::triangulate_hole(mesh, border, out, np);
+#endif
+}
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_HOLE_FILLING_COMPATIBILITY_H
