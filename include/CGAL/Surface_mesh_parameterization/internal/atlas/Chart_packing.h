@@ -518,11 +518,15 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   const double alone = double(cells - 2 * pad - 2) / in.longest;
   double too_large = HUGE_VAL;
   if(alone > 0. && scale > alone) scale = alone;
+  int misses = 0;
   for(int round = 0; round < tries; ++round) {
     const long side = pack(scale);
     if(side > 0.98 * double(cells)) break;
     if(side < 0) too_large = (std::min)(too_large, scale);
-    double next = side > 0 ? scale * 0.995 * double(cells) / double(side) : 0.85 * scale;
+    // a first scale that does not fit is mostly the coarse estimate's, a little too hopeful:
+    // just below it the square is most often still within the window above
+    misses += side < 0;
+    double next = side > 0 ? scale * 0.995 * double(cells) / double(side) : (misses == 1 ? 0.985 : 0.85) * scale;
     if(next <= best.scale || next >= too_large)
       next = best.scale > 0. ? (too_large < HUGE_VAL ? std::sqrt(best.scale * too_large) : 1.02 * best.scale)
                              : 0.85 * too_large;
