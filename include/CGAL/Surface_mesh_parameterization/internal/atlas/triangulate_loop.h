@@ -30,7 +30,8 @@ namespace internal {
 
 typedef std::array<int, 3> Loop_triangle;
 
-// Loops up to this size that are not planar get CGAL's exhaustive search (a few milliseconds).
+// Loops up to this size that are not planar get CGAL's exhaustive search (a few milliseconds),
+// here and in the holes of a chart (Chart_parameterization.h).
 constexpr std::size_t exhaustive_loop_size = 64;
 
 // Ear clipping of the loop `p`: the ear with the smallest inner angle first (the advancing-front
