@@ -90,15 +90,16 @@ inline std::vector<int> partition_chart(const Chart_map& chart, int parts)
   return label;
 }
 
-// Gives each piece of a part that is cut off from the part's largest piece (through the edges
-// of the chart `chart`) to the neighbouring part whose largest piece it shares the most edges
-// with, until every part is in one piece (pieces that no other part touches stay). Parts chosen
-// in the uv plane can hold pieces that a hole or a fold of the chart keeps apart on the surface,
-// and each such piece would become a chart of its own, seams all around.
-inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& part)
+// A side two triangles of a chart share: the triangles and the two vertices.
+struct Shared_side
+{
+  int t0, t1, a, b;
+};
+
+// The sides the triangles of `chart` share (pairs of sides of the same edge), each once.
+inline std::vector<Shared_side> shared_sides(const Flat_triangles& chart)
 {
   const std::size_t n = chart.tri.size();
-  // the triangles across each side, in the chart: pairs of sides of the same edge
   std::vector<std::array<int, 3> > side_key; // smaller vertex, larger vertex, triangle
   side_key.reserve(3 * n);
   for(std::size_t t = 0; t < n; ++t)
@@ -107,12 +108,27 @@ inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& 
       side_key.push_back({(std::min)(a, b), (std::max)(a, b), int(t)});
     }
   std::sort(side_key.begin(), side_key.end());
-  std::vector<std::vector<int> > across(n);
+  std::vector<Shared_side> shared;
   for(std::size_t i = 0; i + 1 < side_key.size(); ++i)
-    if(side_key[i][0] == side_key[i + 1][0] && side_key[i][1] == side_key[i + 1][1]) {
-      across[std::size_t(side_key[i][2])].push_back(side_key[i + 1][2]);
-      across[std::size_t(side_key[i + 1][2])].push_back(side_key[i][2]);
-    }
+    if(side_key[i][0] == side_key[i + 1][0] && side_key[i][1] == side_key[i + 1][1])
+      shared.push_back({side_key[i][2], side_key[i + 1][2], side_key[i][0], side_key[i][1]});
+  return shared;
+}
+
+// Gives each piece of a part that is cut off from the part's largest piece (through the edges
+// of the chart `chart`) to the neighbouring part whose largest piece it shares the most edges
+// with, until every part is in one piece (pieces that no other part touches stay). Parts chosen
+// in the uv plane can hold pieces that a hole or a fold of the chart keeps apart on the surface,
+// and each such piece would become a chart of its own, seams all around.
+inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& part)
+{
+  const std::size_t n = chart.tri.size();
+  // the triangles across each side, in the chart
+  std::vector<std::vector<int> > across(n);
+  for(const Shared_side& s : shared_sides(chart)) {
+    across[std::size_t(s.t0)].push_back(s.t1);
+    across[std::size_t(s.t1)].push_back(s.t0);
+  }
   // the largest pieces keep their part and only grow: each round joins at least one piece to
   // one of them, or ends
   for(bool changed = true; changed;) {

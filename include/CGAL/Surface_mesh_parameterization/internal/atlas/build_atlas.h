@@ -137,18 +137,13 @@ inline double cut_position(const std::vector<double>& along, const Flat_triangle
   std::sort(v.begin(), v.end());
   // the edges inside the chart, each cut by the positions in (low, high]: the cut at t is as
   // long as the edges with low < t less those with high < t
-  std::unordered_map<std::pair<int, int>, std::size_t, Edge_hash> first; // edge -> a triangle it bounds
-  std::vector<std::pair<double, double> > low, high;                      // (position, edge length)
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t k = 0; k < 3; ++k) {
-      const int a = chart.tri[i][k], b = chart.tri[i][(k + 1) % 3];
-      const std::size_t j = first.emplace(std::make_pair((std::min)(a, b), (std::max)(a, b)), i).first->second;
-      if(j == i)
-        continue;
-      const double length = norm3(sub3(chart.xyz[std::size_t(a)], chart.xyz[std::size_t(b)]));
-      low.emplace_back((std::min)(along[i], along[j]), length);
-      high.emplace_back((std::max)(along[i], along[j]), length);
-    }
+  std::vector<std::pair<double, double> > low, high; // (position, edge length)
+  for(const Shared_side& s : shared_sides(chart)) {
+    const double length = norm3(sub3(chart.xyz[std::size_t(s.a)], chart.xyz[std::size_t(s.b)]));
+    const double p0 = along[std::size_t(s.t0)], p1 = along[std::size_t(s.t1)];
+    low.emplace_back((std::min)(p0, p1), length);
+    high.emplace_back((std::max)(p0, p1), length);
+  }
   const auto prefix = [](std::vector<std::pair<double, double> >& e) {
     std::sort(e.begin(), e.end());
     double sum = 0.;
