@@ -1001,11 +1001,26 @@ void loop_triangulations()
     }
     return p;
   };
+  auto shifted = [](std::vector<I::Vec3> p, double offset, double scale) {
+    for(I::Vec3& q : p)
+      for(double& c : q)
+        c = offset + scale * c;
+    return p;
+  };
   struct Case { std::vector<I::Vec3> p; int refused_a, refused_b; bool ears_only; };
   const std::vector<Case> cases = {
       {wavy(10, 0., 0.), -1, -1, false},  {wavy(200, 0., 3.), -1, -1, false}, {wavy(20, 2., 0.), -1, -1, false},
       {wavy(12, 2., 0.), 0, 6, false},     {wavy(300, 2., 0.), -1, -1, false}, {wavy(100, 2., 0.), 0, 50, false},
-      {wavy(301, 0., 4.), -1, -1, true},   {wavy(40, 0., 1.5), -1, -1, true}};
+      {wavy(301, 0., 4.), -1, -1, true},   {wavy(40, 0., 1.5), -1, -1, true},
+      // found by the fuzz harness: nearly on a line, four points one above the other; CGAL's
+      // planar path (whose predicates project along its computed normal) failed a precondition
+      {{{-2.4203699467808239e-122, -2.4203699467808239e-122, -6.0509248669520598e-123},
+        {-2.4203699467808239e-122, -2.4203699467808239e-122, -0.62892919816022752},
+        {-2.4203699467808239e-122, -2.4203699467808239e-122, -2.4203699467808239e-122},
+        {-2.4203699467808239e-122, -2.4203699467808239e-122, -2.1178237034332209e-122},
+        {6.0509248669520598e-123, -1.512731216738015e-122, -2.4203699467808239e-122}}, -1, -1, false},
+      // a planar loop far from the origin and one at a tiny scale
+      {shifted(wavy(30, 0., 2.), 1e9, 1.), -1, -1, false}, {shifted(wavy(30, 0., 2.), 0., 1e-150), -1, -1, false}};
   for(std::size_t c = 0; c < cases.size(); ++c) {
     const Case& k = cases[c];
     const int n = int(k.p.size());
@@ -1019,9 +1034,10 @@ void loop_triangulations()
     triangulate(again);
     std::map<std::pair<int, int>, int> directed;
     bool refused = false, turned = false;
+    const bool planar = std::all_of(k.p.begin(), k.p.end(), [&](const I::Vec3& q) { return q[2] == k.p[0][2]; });
     for(const I::Loop_triangle& q : t) {
       const I::Vec3 normal = I::cross3(I::sub3(k.p[std::size_t(q[1])], k.p[std::size_t(q[0])]), I::sub3(k.p[std::size_t(q[2])], k.p[std::size_t(q[0])]));
-      turned = turned || (k.p[0][2] == 0. && k.p[1][2] == 0. && normal[2] <= 0.); // planar loops
+      turned = turned || (planar && normal[2] <= 0.);
       for(std::size_t j = 0; j < 3; ++j) {
         const int a = q[j], b = q[(j + 1) % 3];
         ++directed[{a, b}];

@@ -17,18 +17,15 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// Fills the hole of `border` by a 2D constrained Delaunay triangulation if it is nearly planar,
-// else, if `exhaustive`, by the search over all triangulations (cubic in the hole's size), and
-// writes the new faces to `out` (none if neither applies). Both depend on the hole alone, unlike
-// CGAL's default search through a 3D Delaunay triangulation, whose result depends on where that
-// triangulation's cells lie in memory; both add no edge the mesh already has.
+// Fills the hole of `border` by CGAL's search over all its triangulations (cubic in the hole's
+// size), which adds no edge the mesh already has and, unlike CGAL's default search through a 3D
+// Delaunay triangulation, depends on the hole alone; writes the new faces to `out` (none if no
+// triangulation is found).
 template <typename PolygonMesh, typename OutputIterator>
-void fill_hole_deterministically(PolygonMesh& mesh, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border,
-                                 bool exhaustive, OutputIterator out)
+void fill_hole_exhaustively(PolygonMesh& mesh, typename boost::graph_traits<PolygonMesh>::halfedge_descriptor border,
+                            OutputIterator out)
 {
-  const auto np = CGAL::parameters::use_2d_constrained_delaunay_triangulation(true)
-                      .use_delaunay_triangulation(false)
-                      .do_not_use_cubic_algorithm(!exhaustive);
+  const auto np = CGAL::parameters::use_2d_constrained_delaunay_triangulation(false).use_delaunay_triangulation(false);
 #if CGAL_VERSION_NR >= 1050601000
   CGAL::Polygon_mesh_processing::triangulate_hole(mesh, border, np.face_output_iterator(out));
 #else

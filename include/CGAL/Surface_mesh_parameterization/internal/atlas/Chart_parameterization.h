@@ -288,10 +288,11 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
 }
 
 // `sm`, the faces of `flat` in their order, flattened from LSCM's map of it with every hole but
-// the longest border filled (by CGAL's hole filling, fill_hole_deterministically(), else by ear
-// clipping), the fillers kept as guards through the polish (the holes stay open and nothing
-// enters them): `uv` per vertex of `flat`. False if `sm` is not a surface of genus 0 with holes
-// (`holes` false, `sm` unchanged), or a hole cannot be filled, or LSCM's map is no bijection.
+// the longest border filled (a planar loop's constrained Delaunay triangles, else CGAL's
+// exhaustive search, else ear clipping: see triangulate_loop.h), the fillers kept as guards
+// through the polish (the holes stay open and nothing enters them): `uv` per vertex of `flat`.
+// False if `sm` is not a surface of genus 0 with holes (`holes` false, `sm` unchanged), or a
+// hole cannot be filled, or LSCM's map is no bijection.
 inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Chart_parameterization_settings& settings,
                           std::vector<Vec2>& uv, bool& holes)
 {
@@ -313,19 +314,9 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
     }
     if(outer)
       continue;
-    std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
-    fill_hole_deterministically(sm, h, loop.size() <= exhaustive_loop_size, std::back_inserter(filler));
-    for(auto f : filler) {
-      Triangle t;
-      int k = 0;
-      for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
-        t[std::size_t(k++)] = int(v);
-      guard.push_back(t);
-    }
-    if(!filler.empty())
-      continue;
-    // a loop neither search fills (long and far from planar): its ears, whose new sides may not
-    // be edges of the chart already (nor join a vertex to itself, where the loop passes twice)
+    // a planar loop's constrained Delaunay triangles, else CGAL's exhaustive search on the mesh,
+    // else ears; none of whose new sides is an edge of the chart already (nor joins a vertex to
+    // itself, where the loop passes twice)
     std::vector<Vec3> points;
     for(Chart_vertex v : loop)
       points.push_back(flat.xyz[std::size_t(v)]);
@@ -333,10 +324,26 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
       const Chart_vertex va = loop[std::size_t(a)], vb = loop[std::size_t(b)];
       return va != vb && !halfedge(va, vb, sm).second;
     };
-    std::vector<Loop_triangle> ears;
-    if(!clip_ears(points, allowed, ears))
-      return false;
-    for(const Loop_triangle& t : ears) {
+    std::vector<Loop_triangle> fill;
+    if(!triangulate_planar_loop(points, fill) || !new_sides_allowed(fill, points.size(), allowed)) {
+      fill.clear();
+      if(loop.size() <= exhaustive_loop_size) {
+        std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> filler;
+        fill_hole_exhaustively(sm, h, std::back_inserter(filler));
+        for(auto f : filler) {
+          Triangle t;
+          int k = 0;
+          for(Chart_vertex v : vertices_around_face(halfedge(f, sm), sm))
+            t[std::size_t(k++)] = int(v);
+          guard.push_back(t);
+        }
+        if(!filler.empty())
+          continue;
+      }
+      if(!clip_ears(points, allowed, fill))
+        return false;
+    }
+    for(const Loop_triangle& t : fill) {
       const Chart_vertex a = loop[std::size_t(t[0])], b = loop[std::size_t(t[1])], c = loop[std::size_t(t[2])];
       if(sm.add_face(a, b, c) == Chart_mesh::null_face())
         return false;

@@ -7,18 +7,27 @@
 // Triangles over a closed loop of points, without new points, that depend on the loop alone.
 // CGAL's hole triangulation does not, when it searches through a 3D Delaunay triangulation (its
 // fast search, and its default): the triangles it picks depend on where that triangulation's
-// cells lie in memory, so that a call gives another result after other allocations. Its other
-// two searches are deterministic: a 2D constrained Delaunay triangulation when the loop is
-// nearly planar, and the exhaustive search over all triangulations, cubic in the loop's size.
-// Longer loops that are not planar are cut by ear clipping.
+// cells lie in memory, so that a call gives another result after other allocations. Its
+// exhaustive search over all triangulations (cubic in the loop's size) is deterministic; its
+// planar path is not robust: it projects along a computed normal inside its predicates, which
+// then disagree with one another on nearly degenerate loops (a precondition fails, found by the
+// fuzz harness). Nearly planar loops are therefore projected here once, to points of the plane
+// on which CGAL's 2D constrained Delaunay triangulation decides exactly; longer loops that are
+// not planar are cut by ear clipping.
 
 #include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_hole.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <queue>
 #include <set>
 #include <tuple>
 #include <utility>
@@ -101,37 +110,161 @@ bool clip_ears(const std::vector<Vec3>& p, const Allowed& allowed, std::vector<L
   return true;
 }
 
-// Triangles over the loop `p` (positions along it, each triangle in the loop's orientation),
-// none of whose new sides (between positions a and b) is refused by `allowed(a, b)`: CGAL's
-// planar or exhaustive search where it applies, else ear clipping. False if none is found.
+// Whether every new side of the triangles `t` over a loop of `n` positions (a side that is not
+// between neighbours along the loop) is accepted by `allowed(a, b)`.
 template <typename Allowed>
-bool triangulate_loop(const std::vector<Vec3>& p, const Allowed& allowed, std::vector<Loop_triangle>& out)
+bool new_sides_allowed(const std::vector<Loop_triangle>& t, std::size_t n, const Allowed& allowed)
+{
+  for(const Loop_triangle& q : t)
+    for(std::size_t k = 0; k < 3; ++k) {
+      const int a = q[k], b = q[(k + 1) % 3];
+      if((a + 1) % int(n) != b && (b + 1) % int(n) != a && !allowed(a, b))
+        return false;
+    }
+  return true;
+}
+
+// The constrained Delaunay triangulation of the loop `p` projected on the plane of its Newell
+// normal, each triangle in the loop's orientation, if the loop is nearly planar (its mean
+// squared distance to that plane at most (extent / 4)^2, the largest side of its bounding box
+// as `extent`: CGAL's rule with the box's largest side for its height, so that it does not
+// depend on how the loop lies in space) and its projection is a simple polygon. The projected
+// points are rounded once; every decision after is CGAL's exact predicates on them, so that a
+// degenerate loop is found not simple instead of breaking the triangulation.
+inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop_triangle>& out)
 {
   out.clear();
   const std::size_t n = p.size();
   if(n < 3)
     return false;
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  std::vector<K::Point_3> polyline;
+  // centred and scaled to a unit box: no overflow nor underflow below from where the loop lies
+  Vec3 low = p[0], high = p[0];
   for(const Vec3& q : p)
-    polyline.emplace_back(q[0], q[1], q[2]);
-  std::vector<std::tuple<int, int, int> > triples;
-  namespace PMP = CGAL::Polygon_mesh_processing;
-  PMP::triangulate_hole_polyline(polyline, std::back_inserter(triples),
-                                 CGAL::parameters::use_2d_constrained_delaunay_triangulation(true)
-                                     .use_delaunay_triangulation(false)
-                                     .do_not_use_cubic_algorithm(n > exhaustive_loop_size));
-  bool found = triples.size() == n - 2;
-  for(const auto& t : triples) {
-    const Loop_triangle q{{std::get<0>(t), std::get<1>(t), std::get<2>(t)}};
-    for(std::size_t k = 0; k < 3; ++k) {
-      const int a = q[k], b = q[(k + 1) % 3];
-      const bool side = (a + 1) % int(n) == b || (b + 1) % int(n) == a;
-      found = found && (side || allowed(a, b));
+    for(std::size_t i = 0; i < 3; ++i) {
+      low[i] = (std::min)(low[i], q[i]);
+      high[i] = (std::max)(high[i], q[i]);
     }
-    out.push_back(q);
+  double extent = 0.;
+  Vec3 centre;
+  for(std::size_t i = 0; i < 3; ++i) {
+    extent = (std::max)(extent, high[i] - low[i]);
+    centre[i] = low[i] + 0.5 * (high[i] - low[i]);
   }
-  return found || clip_ears(p, allowed, out);
+  if(!(extent > 0.) || !std::isfinite(extent))
+    return false;
+  std::vector<Vec3> q(n);
+  Vec3 mean = {0., 0., 0.};
+  for(std::size_t j = 0; j < n; ++j)
+    for(std::size_t i = 0; i < 3; ++i) {
+      q[j][i] = (p[j][i] - centre[i]) / extent;
+      mean[i] += q[j][i] / double(n);
+    }
+  Vec3 normal = {0., 0., 0.};
+  for(std::size_t j = 0; j < n; ++j) {
+    const Vec3 c = cross3(sub3(q[j], mean), sub3(q[(j + 1) % n], mean));
+    for(std::size_t i = 0; i < 3; ++i)
+      normal[i] += c[i];
+  }
+  const double length = norm3(normal);
+  if(!(length > 0.) || !std::isfinite(length))
+    return false;
+  for(double& c : normal)
+    c /= length;
+  double squared_distances = 0.;
+  for(const Vec3& x : q) {
+    const double d = dot3(sub3(x, mean), normal);
+    squared_distances += d * d;
+  }
+  if(squared_distances > double(n) / 16.)
+    return false;
+  // (u, v, normal) right-handed: the loop turns counterclockwise in (u, v)
+  const std::size_t away = std::size_t(std::max_element(normal.begin(), normal.end(),
+                                                        [](double a, double b) { return std::abs(a) < std::abs(b); }) -
+                                       normal.begin());
+  Vec3 axis = {0., 0., 0.};
+  axis[(away + 1) % 3] = 1.;
+  Vec3 u = cross3(axis, normal);
+  const double u_length = norm3(u);
+  for(double& c : u)
+    c /= u_length;
+  const Vec3 v = cross3(normal, u);
+
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
+  typedef CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<bool, K> > Fb;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>,
+                                                     CGAL::No_constraint_intersection_tag>
+      Cdt;
+  std::vector<std::pair<K::Point_2, int> > plane;
+  plane.reserve(n);
+  for(std::size_t j = 0; j < n; ++j)
+    plane.emplace_back(K::Point_2(dot3(q[j], u), dot3(q[j], v)), int(j));
+  std::vector<K::Point_2> polygon;
+  for(const auto& x : plane)
+    polygon.push_back(x.first);
+  if(!CGAL::is_simple_2(polygon.begin(), polygon.end(), K()))
+    return false;
+  Cdt cdt;
+  cdt.insert(plane.begin(), plane.end());
+  if(cdt.dimension() != 2 || cdt.number_of_vertices() != n)
+    return false;
+  std::vector<Cdt::Vertex_handle> vertex(n);
+  for(Cdt::Vertex_handle h : cdt.finite_vertex_handles())
+    vertex[std::size_t(h->info())] = h;
+  for(std::size_t j = 0; j < n; ++j)
+    cdt.insert_constraint(vertex[j], vertex[(j + 1) % n]);
+  // outside: reached from the infinite faces without crossing the loop
+  for(Cdt::Face_handle f : cdt.all_face_handles())
+    f->info() = false;
+  std::queue<Cdt::Face_handle> front;
+  front.push(cdt.infinite_face());
+  while(!front.empty()) {
+    const Cdt::Face_handle f = front.front();
+    front.pop();
+    if(f->info())
+      continue;
+    f->info() = true;
+    for(int i = 0; i < 3; ++i)
+      if(!cdt.is_constrained(Cdt::Edge(f, i)))
+        front.push(f->neighbor(i));
+  }
+  bool ccw = CGAL::orientation_2(polygon.begin(), polygon.end(), K()) == CGAL::COUNTERCLOCKWISE;
+  for(Cdt::Face_handle f : cdt.finite_face_handles())
+    if(!f->info()) {
+      const Loop_triangle t{{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}};
+      out.push_back(ccw ? t : Loop_triangle{{t[0], t[2], t[1]}});
+    }
+  return out.size() == n - 2;
+}
+
+// Triangles over the loop `p` (positions along it, each triangle in the loop's orientation),
+// none of whose new sides (between positions a and b) is refused by `allowed(a, b)`: by
+// triangulate_planar_loop() if it applies, else by CGAL's exhaustive search if the loop is short
+// enough, else by ear clipping. False if none is found.
+template <typename Allowed>
+bool triangulate_loop(const std::vector<Vec3>& p, const Allowed& allowed, std::vector<Loop_triangle>& out)
+{
+  const std::size_t n = p.size();
+  if(triangulate_planar_loop(p, out) && new_sides_allowed(out, n, allowed))
+    return true;
+  out.clear();
+  if(n < 3)
+    return false;
+  if(n <= exhaustive_loop_size) {
+    typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+    std::vector<K::Point_3> polyline;
+    for(const Vec3& q : p)
+      polyline.emplace_back(q[0], q[1], q[2]);
+    std::vector<std::tuple<int, int, int> > triples;
+    CGAL::Polygon_mesh_processing::triangulate_hole_polyline(
+        polyline, std::back_inserter(triples),
+        CGAL::parameters::use_2d_constrained_delaunay_triangulation(false).use_delaunay_triangulation(false));
+    for(const auto& t : triples)
+      out.push_back(Loop_triangle{{std::get<0>(t), std::get<1>(t), std::get<2>(t)}});
+    if(out.size() == n - 2 && new_sides_allowed(out, n, allowed))
+      return true;
+  }
+  return clip_ears(p, allowed, out);
 }
 
 } // namespace internal
