@@ -111,6 +111,16 @@ public:
       glue(s);
   }
 
+  // Makes each of `triangles` (all of one chart) a chart of its own: `ids[i]` that of
+  // `triangles[i]`, none glued to another (the triangles of a polygon laid out one by one).
+  void separate(const std::vector<std::size_t>& triangles, const std::vector<int>& ids)
+  {
+    for(std::size_t i = 0; i < triangles.size(); ++i) {
+      forget(triangles[i]);
+      m_chart[triangles[i]] = ids[i];
+    }
+  }
+
   // Grows charts over the triangles whose `allowed` flag is set (one per triangle), numbered
   // from `first_chart`: a triangle joins a chart while its polygon's normal stays within
   // `max_angle` (radians) of the chart's mean normal, and while the chart holds fewer than
@@ -123,15 +133,9 @@ public:
   {
     const double cos_max = std::cos(max_angle);
     const std::size_t nt = m_mesh.vertex.size();
-    // forget the charts of the allowed triangles
     for(std::size_t t = 0; t < nt; ++t)
-      if(allowed[t]) {
-        m_chart[t] = -1;
-        for(int k = 0; k < 3; ++k) {
-          m_glued[3 * t + k] = 0;
-          m_parent[3 * t + k] = int(3 * t + k);
-        }
-      }
+      if(allowed[t])
+        forget(t);
     auto free_unit = [&](std::size_t u) {
       const std::size_t t = m_unit_first[u];
       return allowed[t] && m_chart[t] < 0;
@@ -199,6 +203,17 @@ private:
   {
     const double na = norm3(a), nb = norm3(b);
     return na > 0. && nb > 0. ? dot3(a, b) / (na * nb) : 1.;
+  }
+
+  // Takes triangle t out of its chart: no chart, its sides unglued, its corners apart. (The
+  // sides glued to its own are those of triangles of its chart, forgotten with it.)
+  void forget(std::size_t t)
+  {
+    m_chart[t] = -1;
+    for(std::size_t k = 0; k < 3; ++k) {
+      m_glued[3 * t + k] = 0;
+      m_parent[3 * t + k] = int(3 * t + k);
+    }
   }
 
   int find(int c)
@@ -436,11 +451,7 @@ private:
       std::vector<char> mine(m_chart.size(), 0);
       for(std::size_t t : st.members) {
         mine[t] = 1;
-        m_chart[t] = -1;
-        for(int k = 0; k < 3; ++k) {
-          m_glued[3 * t + std::size_t(k)] = 0;
-          m_parent[3 * t + std::size_t(k)] = int(3 * t) + k;
-        }
+        forget(t);
       }
       st = Chart_state();
       Chart_state& to = m_state[std::size_t(best)];

@@ -300,17 +300,22 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     const std::vector<std::size_t> triangles = charts[c].triangles;
     const std::size_t units = units_of(triangles);
     if(units < 2) {
-      if(!charts[c].ok)
-        for(std::size_t i = 0; i < triangles.size(); ++i) {
-          Chart_map single;
-          single.triangles = {triangles[i]};
-          make_chart_vertices(m, g, single);
-          layout_single_triangle(single);
-          single.ok = true;
-          single.l2 = 1.;
-          if(i == 0) { charts[c] = single; areas[c] = chart_areas(single); }
-          else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
-        }
+      if(charts[c].ok)
+        return;
+      std::vector<int> ids(triangles.size(), int(c));
+      for(std::size_t i = 1; i < triangles.size(); ++i)
+        ids[i] = int(charts.size() + i - 1);
+      g.separate(triangles, ids);
+      for(std::size_t i = 0; i < triangles.size(); ++i) {
+        Chart_map single;
+        single.triangles = {triangles[i]};
+        make_chart_vertices(m, g, single);
+        layout_single_triangle(single);
+        single.ok = true;
+        single.l2 = 1.;
+        if(i == 0) { charts[c] = single; areas[c] = chart_areas(single); }
+        else { charts.push_back(single); angle.push_back(0.); members.emplace_back(); }
+      }
       return;
     }
     const auto t1 = std::chrono::steady_clock::now();
