@@ -1077,6 +1077,39 @@ void call_independence()
   }
 }
 
+// Found by the fuzz harness: a chart mesh of two pieces, a disk and a closed torus (Euler
+// characteristic 1, one border loop, as a disk has). CGAL's LSCM numbers its unknowns within
+// the piece of the border, so that the indices of the whole mesh ran past its system (an
+// assertion in OpenNL; without assertions, a write out of bounds). Such a chart is refused.
+void disk_and_torus_chart()
+{
+  namespace I = SMP::internal;
+  I::Flat_triangles flat;
+  const int n = 8, m = 5;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      const double a = 2. * CGAL_PI * i / n, b = 2. * CGAL_PI * j / m;
+      flat.xyz.push_back({(3. + std::cos(b)) * std::cos(a), (3. + std::cos(b)) * std::sin(a), std::sin(b)});
+    }
+  auto at = [&](int i, int j) { return ((i + n) % n) * m + (j + m) % m; };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < m; ++j) {
+      flat.tri.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      flat.tri.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  const int d = int(flat.xyz.size());
+  flat.xyz.push_back({10., 0., 0.});
+  flat.xyz.push_back({11., 0., 0.});
+  flat.xyz.push_back({10., 1., 0.});
+  flat.tri.push_back({d, d + 1, d + 2});
+  I::Chart_mesh sm;
+  SMP_CHECK(I::make_chart_mesh(flat, sm), "a disk and a torus: the chart mesh is made");
+  const auto bhd = CGAL::Polygon_mesh_processing::longest_border(sm).first;
+  std::vector<I::Vec2> uv;
+  SMP_CHECK(!I::flatten_from_conformal(sm, bhd, flat, std::vector<I::Triangle>(), I::Chart_parameterization_settings(), uv),
+            "a disk and a torus: not flattened as one chart");
+}
+
 // Found by the fuzz harness: a chart of one polygon that cannot be flattened has its triangles
 // laid out one by one, each a chart; they were left in one chart of the growing, so that a chart
 // later made of one of them saw the others' sides as slits of its own and failed to find them
@@ -1242,6 +1275,7 @@ int main(int argc, char** argv)
   charts_joined();
   only_flat_polygons();
   polygon_laid_out_by_triangles();
+  disk_and_torus_chart();
   scaled_soups();
   progress();
   mesh_atlas<CGAL::Surface_mesh<Point> >(torus(40, 16, true), "Surface_mesh");

@@ -27,6 +27,7 @@
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -164,6 +165,12 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
   const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
   if(loops.size() != 1 || euler != 1)
+    return false;
+  // a disk and closed pieces can add up to a disk's characteristic; CGAL's LSCM numbers the
+  // unknowns of the piece of `bhd` only, and indexes them by `vimap`: one piece only
+  std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> piece;
+  CGAL::Polygon_mesh_processing::connected_component(face(opposite(bhd, sm), sm), sm, std::back_inserter(piece));
+  if(piece.size() != num_faces(sm))
     return false;
   // LSCM fixes the chart's extremes along the two longest sides of its bounding box (CGAL's
   // Two_vertices_parameterizer_3): a chart without extent along two of the axes has none
