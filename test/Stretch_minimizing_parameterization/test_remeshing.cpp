@@ -194,6 +194,15 @@ void bundled_meshes()
     const auto samples = CGAL::parameters::number_of_points_on_faces(20000);
     hausdorff[int(pair)] = PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(out, head, samples, samples);
   }
+  {
+    // with {U^0} at 5000 vertices, the samples that fall together in U^0's compressed arms (and
+    // are dropped by the triangulation) change a lot from one sampling density to the next:
+    // the rounds that correct the count went back and forth, and the last was kept (5654)
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(head, 5000, out,
+        SMP::parameters::parameterization_pair(SMP::Remeshing_pair::U0));
+    check_remeshed(head, out, r, 5000, "mannequin-devil.off, {U0}, 5000 vertices");
+  }
   SMP_CHECK(variation[2] < variation[0] && hausdorff[2] <= 1.05 * hausdorff[0],
             "mannequin-devil.off: area variation " << variation[2] << " with {U0, Uopt}, " << variation[0]
             << " with {U0}; Hausdorff " << hausdorff[2] << " and " << hausdorff[0]);

@@ -245,6 +245,13 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   Lifted_mesh mesh;
   double per_area = double(wanted) / raster.total_area;
   r.seconds_sampling = seconds_since(t0);
+  // the round whose count is nearest the one asked for: where U' is so compressed that samples
+  // fall together there (and the triangulation keeps one), the count can jump from one density
+  // to the next, and the rounds go back and forth
+  Lifted_mesh best_mesh;
+  std::vector<Vec2> best_uv;
+  std::size_t best_wrong = 0;
+  double best_miss = HUGE_VAL;
   for(int round = 0; round < 8; ++round) {
     const auto t1 = std::chrono::steady_clock::now();
     inside.clear();
@@ -370,10 +377,20 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     }
     r.seconds_triangulation += seconds_since(t2);
     const std::size_t used = mesh.number_of_vertices();
-    if(std::abs(double(used) - double(settings.vertices)) <= 0.002 * double(settings.vertices) || used <= b)
+    const double miss = std::abs(double(used) - double(settings.vertices));
+    if(miss < best_miss) {
+      best_miss = miss;
+      best_mesh = mesh;
+      best_uv = uv;
+      best_wrong = r.wrong_faces;
+    }
+    if(miss <= 0.002 * double(settings.vertices) || used <= b)
       break;
     per_area *= double(wanted) / double(used - b);
   }
+  mesh = best_mesh;
+  uv.swap(best_uv);
+  r.wrong_faces = best_wrong;
   xyz.clear();
   for(const auto v : mesh.vertices())
     xyz.push_back({{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}});
