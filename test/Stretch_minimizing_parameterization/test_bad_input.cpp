@@ -683,6 +683,31 @@ void test_eta()
   check_success("bad eta overridden per call", m, bhd, maps, p);
 }
 
+// Found by the fuzz harness (a chart of the atlas): two triangles that share one vertex only. The
+// mesh holds them (one border loop through both, passing the shared vertex twice), but the
+// component of the border halfedge is one triangle: the loop reached vertices outside the
+// component (an index of -1 into an array). ERROR_NO_TOPOLOGICAL_DISC, the maps untouched.
+void test_pinched_vertex()
+{
+  Mesh m;
+  const vertex_descriptor o = m.add_vertex(Point_3(0, 0, 0)), a = m.add_vertex(Point_3(1, 0, 0)),
+                          b = m.add_vertex(Point_3(1, 1, 0)), c = m.add_vertex(Point_3(-1, 0, 0)),
+                          d = m.add_vertex(Point_3(-1, -1, 0));
+  const bool made = m.add_face(o, a, b) != Mesh::null_face() && m.add_face(o, c, d) != Mesh::null_face();
+  SMP_CHECK(made, "a pinched vertex: the two triangles should be added");
+  if(!made)
+    return;
+  for(halfedge_descriptor bhd : halfedges(m)) {
+    if(!is_border(bhd, m))
+      continue;
+    Maps maps = make_maps(m);
+    Parameterizer p;
+    const SMP::Error_code e = p.parameterize(m, bhd, maps.uv, maps.vi, maps.vp);
+    check_code("a pinched vertex", e, SMP::ERROR_NO_TOPOLOGICAL_DISC, p);
+    check_untouched("a pinched vertex", m, bhd, maps, p, false);
+  }
+}
+
 // A handle: a triangulated torus with one face removed has one border loop but Euler
 // characteristic -1: ERROR_NO_TOPOLOGICAL_DISC. The same removal on a tetrahedron (genus 0)
 // leaves a disk, which runs (circular border, the square needs four border vertices), so the
@@ -807,6 +832,7 @@ int main()
   test_single_triangle();
   test_eta();
   test_handle();
+  test_pinched_vertex();
   test_error_messages();
   test_reuse();
   return smp_test::summary();

@@ -137,8 +137,10 @@ public:
       loops.emplace_back();
       for(halfedge_descriptor h : halfedges_around_face(start, tm)) {
         const int v = get(local, target(h, tm)) - 1;
-        if(loop_of[v] != -1)
-          return false; // a vertex where the border touches itself: not a manifold surface
+        // a vertex where the border touches itself, or one of another component (the loop
+        // goes on there through a vertex the two share): not a manifold surface
+        if(v < 0 || loop_of[v] != -1)
+          return false;
         loop_of[v] = id;
         loops.back().push_back(h);
         ++loop_halfedges;
@@ -146,7 +148,7 @@ public:
       return true;
     };
     if(!walk(bhd))
-      return fail(ERROR_NO_TOPOLOGICAL_DISC, "the border passes twice through a vertex");
+      return fail(ERROR_NO_TOPOLOGICAL_DISC, "the border passes twice through a vertex, or through another component");
     for(face_descriptor f : cc_faces)
       for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
         if(is_border(opposite(h, tm), tm) && loop_of[get(local, source(h, tm)) - 1] == -1)
