@@ -137,7 +137,8 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
   const std::size_t n = p.size();
   if(n < 3)
     return false;
-  // centred and scaled to a unit box: no overflow nor underflow below from where the loop lies
+  // centred and scaled to a unit box: where the loop lies makes the products below neither
+  // overflow nor underflow
   Vec3 low = p[0], high = p[0];
   for(const Vec3& q : p)
     for(std::size_t i = 0; i < 3; ++i) {
@@ -228,7 +229,7 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
       if(!cdt.is_constrained(Cdt::Edge(f, i)))
         front.push(f->neighbor(i));
   }
-  bool ccw = CGAL::orientation_2(polygon.begin(), polygon.end(), K()) == CGAL::COUNTERCLOCKWISE;
+  const bool ccw = CGAL::orientation_2(polygon.begin(), polygon.end(), K()) == CGAL::COUNTERCLOCKWISE;
   for(Cdt::Face_handle f : cdt.finite_face_handles())
     if(!f->info()) {
       const Loop_triangle t{{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}};
