@@ -14,6 +14,8 @@
 #                              6.6M faces, about 6.5 GB and minutes per method)
 #   SMP_BENCH_METHODS=a,b      only these methods (ids: benchmark_parameterizers --list)
 #   SMP_BENCH_BUILD_DIR=build/bench   SMP_BENCH_RESULTS=benchmark/results
+#   SMP_BENCH_SUITESPARSE=ON   OFF: build without SuiteSparse (Eigen's solvers only, as a program
+#                              that includes the headers and links nothing else gets them)
 # Nothing is written outside the build directory and the results directory.
 set -euo pipefail
 
@@ -32,7 +34,7 @@ bash scripts/install-deps.sh gnuplot-nox
 
 # --- build --------------------------------------------------------------------------------
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DSMP_BUILD_BENCHMARK=ON \
-      -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=OFF >/dev/null
+      -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=OFF -DSMP_WITH_UMFPACK="${SMP_BENCH_SUITESPARSE:-ON}" >/dev/null
 cmake --build "$build" -j"$(nproc)" --target benchmark_parameterizers
 program="$build/benchmark/Stretch_minimizing_parameterization/benchmark_parameterizers"
 
@@ -93,7 +95,7 @@ elapsed=$(( $(date +%s) - start_seconds ))
 {
   echo "- load average at the end: $(cut -d ' ' -f 1-3 /proc/loadavg)"
   echo "- the whole of scripts/benchmark.sh took $((elapsed / 60)) min $((elapsed % 60)) s"
-  echo "- command: bash scripts/benchmark.sh (budget ${budget} s, hard limit ${hard_limit} s, Loop levels up to ${max_loop})"
+  echo "- command: bash scripts/benchmark.sh (budget ${budget} s, hard limit ${hard_limit} s, Loop levels up to ${max_loop}, SuiteSparse ${SMP_BENCH_SUITESPARSE:-ON}${SMP_BENCH_METHODS:+, methods $SMP_BENCH_METHODS})"
 } >> "$results/machine.md"
 
 # an index

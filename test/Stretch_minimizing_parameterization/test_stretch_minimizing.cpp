@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Ordered_sparse_lu.h>
 #include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -463,6 +464,30 @@ void check_ordered_solvers()
   llt.factorize(singular);
   SMP_CHECK(llt.info() != Eigen::Success, "CHOLMOD's LL^T factored an indefinite matrix");
 #endif
+
+  // Eigen's SparseLU in the minimum degree order of the pattern, on a nonsymmetric matrix of
+  // that pattern (rows weighted unevenly, as the weights of a vertex's neighbours are): the
+  // solution of COLAMD's order, for one column and two, with the values changed after the
+  // analysis, and again after the factors are freed
+  Matrix general = lower.selfadjointView<Eigen::Lower>();
+  for(int k = 0; k < general.outerSize(); ++k)
+    for(Matrix::InnerIterator it(general, k); it; ++it)
+      if(it.row() != it.col())
+        it.valueRef() *= 1. + 0.5 * std::sin(double(3 * it.row() + it.col()));
+  Eigen::SparseLU<Matrix, Eigen::COLAMDOrdering<int> > colamd(general);
+  Eigen::MatrixXd B(n, 2);
+  B << b, b.reverse();
+  const Eigen::MatrixXd X = colamd.solve(B);
+  SMP::internal::Ordered_sparse_lu lu;
+  lu.analyzePattern(lower.selfadjointView<Eigen::Lower>());
+  lu.factorize(general);
+  SMP_CHECK(lu.info() == Eigen::Success && (lu.solve(B) - X).norm() < 1e-10 * X.norm() &&
+            (lu.solve(b) - X.col(0)).norm() < 1e-10 * X.norm(), "Eigen's SparseLU in a minimum degree order solves otherwise");
+  lu.release();
+  SMP_CHECK(lu.info() != Eigen::Success, "the LU has factors after release()");
+  lu.compute(general);
+  SMP_CHECK(lu.info() == Eigen::Success && (lu.solve(B) - X).norm() < 1e-10 * X.norm(),
+            "Eigen's SparseLU in a minimum degree order solves otherwise after release()");
 }
 
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)

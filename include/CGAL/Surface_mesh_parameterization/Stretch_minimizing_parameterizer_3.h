@@ -113,10 +113,11 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///         iterative; its pattern is analysed once per call, its factorization serves both
 ///         coordinates), or any model of CGAL's concept `SparseLinearAlgebraWithFactorTraits_d`
 ///         (`factor()` at every step, then `linear_solver()` for each coordinate). <b>%Default:</b>
-/// \code
-///   CGAL::Eigen_solver_traits<Eigen::SparseLU<CGAL::Eigen_sparse_matrix<double>::EigenType,
-///                                             Eigen::COLAMDOrdering<int> > >
-/// \endcode
+///         `CGAL::Eigen_solver_traits` of an internal wrapper of `Eigen::SparseLU` that permutes
+///         the rows and columns of the system alike into Eigen's minimum degree order
+///         (`Eigen::AMDOrdering`) of its pattern and prefers the diagonal as pivot: the map of
+///         `Eigen::SparseLU` with its own column ordering (COLAMD), with less fill, so faster on
+///         large meshes (the benchmark, built without SuiteSparse, says by how much);
 ///         or, when CGAL's macro `CGAL_SMP_USE_SPARSESUITE_SOLVERS` is defined (as for CGAL's
 ///         ARAP and Orbifold Tutte parameterizers; the package's CMake target defines it if
 ///         SuiteSparse's UMFPACK is found; link UMFPACK), faster here (the benchmark says by how

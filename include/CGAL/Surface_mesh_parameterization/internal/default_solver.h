@@ -6,13 +6,15 @@
 
 // The default sparse solver of the package. With CGAL's own macro
 // CGAL_SMP_USE_SPARSESUITE_SOLVERS defined (the package's CMake target defines it when
-// SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's SparseLU with
-// COLAMD ordering. UMFPACK without iterative refinement is the faster of the two on the
-// benchmark's meshes (benchmark/ measures by how much). The type depends on the macro: it is
-// declared in the solver configuration's namespace (solver_configuration.h says why).
+// SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's SparseLU in a
+// minimum degree order of the pattern (`Ordered_sparse_lu`). UMFPACK without iterative
+// refinement is the faster of the two on the benchmark's large meshes (benchmark/ measures by
+// how much). The type depends on the macro: it is declared in the solver configuration's
+// namespace (solver_configuration.h says why).
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
+#include <CGAL/Surface_mesh_parameterization/internal/Ordered_sparse_lu.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 
 #include <CGAL/Eigen_matrix.h>
@@ -48,8 +50,7 @@ struct Is_umfpack<Eigen::UmfPackLU<Matrix> > : std::true_type { };
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 typedef CGAL::Eigen_solver_traits<Umfpack_lu<Eigen_sparse_matrix<double>::EigenType> > Default_solver_traits;
 #else
-typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType,
-                                                  Eigen::COLAMDOrdering<int> > >           Default_solver_traits;
+typedef CGAL::Eigen_solver_traits<Ordered_sparse_lu> Default_solver_traits;
 #endif
 
 // What the package knows of solver traits `Traits`: a `CGAL::Eigen_solver_traits` (a `Solver`
@@ -117,6 +118,11 @@ void release_numeric(Solver&)
 template <typename Solver>
 void release_factors(Solver&)
 { }
+
+inline void release_factors(Ordered_sparse_lu& solver)
+{
+  solver.release();
+}
 
 // `release_factors()` of the Eigen solver of `traits`, if it has one.
 template <typename Traits>
