@@ -13,6 +13,8 @@
 #   SMP_BENCH_MAX_LOOP=3       refine mannequin-devil up to this many times (4: 3.3M vertices,
 #                              6.6M faces, about 6.5 GB and minutes per method)
 #   SMP_BENCH_METHODS=a,b      only these methods (ids: benchmark_parameterizers --list)
+#   SMP_BENCH_MESHES="A B"     these meshes instead (paths; FILE@loopN: refined N times at run
+#                              time), e.g. examples/.../data/mech-holes-shark.off@loop5 (10.4M faces)
 #   SMP_BENCH_BUILD_DIR=build/bench   SMP_BENCH_RESULTS=benchmark/results
 #   SMP_BENCH_SUITESPARSE=ON   OFF: build without SuiteSparse (Eigen's solvers only, as a program
 #                              that includes the headers and links nothing else gets them)
@@ -80,6 +82,9 @@ meshes=(
 for ((level = 1; level <= max_loop; ++level)); do
   meshes+=("$data/mannequin-devil.off@loop$level")
 done
+if [ -n "${SMP_BENCH_MESHES:-}" ]; then
+  read -r -a meshes <<< "$SMP_BENCH_MESHES"
+fi
 options=(--out "$results" --budget "$budget" --hard-limit "$hard_limit" --scratch "$build/scratch")
 if [ -n "${SMP_BENCH_METHODS:-}" ]; then
   options+=(--methods "$SMP_BENCH_METHODS")
@@ -95,7 +100,7 @@ elapsed=$(( $(date +%s) - start_seconds ))
 {
   echo "- load average at the end: $(cut -d ' ' -f 1-3 /proc/loadavg)"
   echo "- the whole of scripts/benchmark.sh took $((elapsed / 60)) min $((elapsed % 60)) s"
-  echo "- command: bash scripts/benchmark.sh (budget ${budget} s, hard limit ${hard_limit} s, Loop levels up to ${max_loop}, SuiteSparse ${SMP_BENCH_SUITESPARSE:-ON}${SMP_BENCH_METHODS:+, methods $SMP_BENCH_METHODS})"
+  echo "- command: bash scripts/benchmark.sh (budget ${budget} s, hard limit ${hard_limit} s, ${SMP_BENCH_MESHES:-Loop levels up to ${max_loop}}, SuiteSparse ${SMP_BENCH_SUITESPARSE:-ON}${SMP_BENCH_METHODS:+, methods $SMP_BENCH_METHODS})"
 } >> "$results/machine.md"
 
 # an index

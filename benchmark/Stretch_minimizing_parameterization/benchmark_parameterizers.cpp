@@ -123,6 +123,7 @@ struct Child_result
   double history_l2[max_history];
   double history_linf[max_history];
   double history_seconds[max_history];
+  double history_peak_kib[max_history]; // peak resident memory of each step (the mesh included), 0 if unknown
   double rss_start_kib = 0.;           // resident memory of the child before the call (the mesh)
   double peak_kib = 0.;                // its peak during the call (VmHWM after a reset)
   double maxrss_kib = 0.;              // getrusage: peak of the child process, start included
@@ -190,10 +191,42 @@ SMP::Error_code run_fixed(Context& c, Child_result& r)
   return timed(r, [&] { return SMP::parameterize(c.mesh, Parameterizer(), c.bhd, c.uv); });
 }
 
+// ------------------------------------------------------------------------------------------
+// Memory of the current process (Linux /proc)
+// ------------------------------------------------------------------------------------------
+
+double proc_status_kib(const char* field)
+{
+  std::ifstream in("/proc/self/status");
+  std::string line;
+  const std::size_t n = std::strlen(field);
+  while(std::getline(in, line))
+    if(line.compare(0, n, field) == 0 && line.size() > n && line[n] == ':')
+      return std::atof(line.c_str() + n + 1);
+  return 0.;
+}
+
+// Resets VmHWM to the current resident size (Linux >= 4.0); false if not possible.
+bool reset_peak_memory()
+{
+  std::ofstream out("/proc/self/clear_refs");
+  out << "5";
+  out.flush();
+  return bool(out);
+}
+
 template <typename NamedParameters>
 SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters& np)
 {
-  Stretch_minimizer p(np);
+  // the peak of each step (its solve and what comes before it: for U^0, the setup), read
+  // after the step and reset for the next
+  std::vector<double> peaks;
+  bool reset = reset_peak_memory();
+  Stretch_minimizer p(np.visitor([&](const SMP::Stretch_minimizing_step&) {
+    peaks.push_back(reset ? proc_status_kib("VmHWM") : 0.);
+    reset = reset_peak_memory();
+    return true;
+  }));
   const SMP::Error_code e = timed(r, [&] { return SMP::parameterize(c.mesh, p, c.bhd, c.uv); });
   const SMP::Stretch_minimizing_report& rep = p.report();
   r.history_size = int(std::min<std::size_t>(rep.history.size(), max_history));
@@ -201,6 +234,7 @@ SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters
     r.history_l2[h] = rep.history[h].l2_stretch;
     r.history_linf[h] = rep.history[h].linf_stretch;
     r.history_seconds[h] = rep.history[h].seconds;
+    r.history_peak_kib[h] = std::size_t(h) < peaks.size() ? peaks[std::size_t(h)] : 0.;
   }
   r.kept_step = int(rep.kept_step);
   r.steps_computed = int(rep.steps_taken());
@@ -365,30 +399,6 @@ std::vector<Method> all_methods()
      }},
   };
   return m;
-}
-
-// ------------------------------------------------------------------------------------------
-// Memory of the current process (Linux /proc)
-// ------------------------------------------------------------------------------------------
-
-double proc_status_kib(const char* field)
-{
-  std::ifstream in("/proc/self/status");
-  std::string line;
-  const std::size_t n = std::strlen(field);
-  while(std::getline(in, line))
-    if(line.compare(0, n, field) == 0 && line.size() > n && line[n] == ':')
-      return std::atof(line.c_str() + n + 1);
-  return 0.;
-}
-
-// Resets VmHWM to the current resident size (Linux >= 4.0); false if not possible.
-bool reset_peak_memory()
-{
-  std::ofstream out("/proc/self/clear_refs");
-  out << "5";
-  out.flush();
-  return bool(out);
 }
 
 // ------------------------------------------------------------------------------------------
@@ -952,6 +962,14 @@ private:
       for(int h = 0; h < cells[fo].first.history_size; ++h)
         out << " " << h << ": " << fmt(cells[fo].first.history_l2[h], 4) << (h + 1 < cells[fo].first.history_size ? "," : "");
       out << "\n";
+      if(cells[fo].first.history_peak_kib[0] > 0.) {
+        out << "U^h, eta = 1, peak resident memory (MiB, the mesh included) by step (step 0: the setup and U^0's "
+               "solve; then the reweighting and the solve):";
+        for(int h = 0; h < cells[fo].first.history_size; ++h)
+          out << " " << h << ": " << fmt(cells[fo].first.history_peak_kib[h] / 1024., 4)
+              << (h + 1 < cells[fo].first.history_size ? "," : "");
+        out << "\n";
+      }
     }
     out << std::endl;
   }
@@ -1000,7 +1018,7 @@ private:
 
   void write_history_csv(std::ostream& out) const
   {
-    out << "mesh,vertices,method_id,step,l2_stretch,linf_stretch,seconds_since_start\n";
+    out << "mesh,vertices,method_id,step,l2_stretch,linf_stretch,seconds_since_start,step_peak_rss_mib\n";
     for(std::size_t k = 0; k < m_meshes.size(); ++k)
       for(std::size_t m = 0; m < m_methods.size(); ++m) {
         const Cell& c = m_cells[k][m];
@@ -1009,7 +1027,7 @@ private:
         for(int h = 0; h < c.first.history_size; ++h)
           out << m_meshes[k].spec.name << "," << m_meshes[k].vertices << "," << m_methods[m].id << "," << h << ","
               << fmt(c.first.history_l2[h], 8) << "," << fmt(c.first.history_linf[h], 8) << ","
-              << fmt(c.first.history_seconds[h], 6) << "\n";
+              << fmt(c.first.history_seconds[h], 6) << "," << fmt(c.first.history_peak_kib[h] / 1024., 6) << "\n";
       }
   }
 
