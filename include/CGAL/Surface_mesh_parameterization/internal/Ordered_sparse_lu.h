@@ -8,8 +8,8 @@
 // and columns first permuted alike into a minimum degree order of the pattern: the default
 // solver when SuiteSparse is not used. Eigen's SparseLU orders the columns alone (COLAMD),
 // which fills more on such systems; handed Eigen's AMD order as its own ordering method, it is
-// far slower still, while the same order applied to the matrix beforehand factors several times
-// faster than COLAMD's on large meshes (the benchmark, built without SuiteSparse, measures it).
+// far slower still, while the same order applied to the matrix beforehand factors faster than
+// COLAMD's on large meshes (benchmark/results/solver_paths measures by how much).
 // The diagonal is preferred as pivot, which keeps the order's fill: the package's systems are
 // diagonally dominant, where elimination on the diagonal is stable.
 

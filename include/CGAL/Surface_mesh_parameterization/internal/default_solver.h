@@ -119,6 +119,7 @@ template <typename Solver>
 void release_factors(Solver&)
 { }
 
+// the Eigen-only default's factors
 inline void release_factors(Ordered_sparse_lu& solver)
 {
   solver.release();
