@@ -123,7 +123,8 @@ struct Child_result
   double history_l2[max_history];
   double history_linf[max_history];
   double history_seconds[max_history];
-  double history_peak_kib[max_history]; // peak resident memory of each step (the mesh included), 0 if unknown
+  double history_peak_kib[max_history] = {}; // peak resident memory of each step (the mesh included), 0 if unknown
+  double steps_peak_kib = 0.;          // the largest of the steps' peaks (they reset VmHWM), polish steps included
   double rss_start_kib = 0.;           // resident memory of the child before the call (the mesh)
   double peak_kib = 0.;                // its peak during the call (VmHWM after a reset)
   double maxrss_kib = 0.;              // getrusage: peak of the child process, start included
@@ -236,6 +237,8 @@ SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters
     r.history_seconds[h] = rep.history[h].seconds;
     r.history_peak_kib[h] = std::size_t(h) < peaks.size() ? peaks[std::size_t(h)] : 0.;
   }
+  for(double k : peaks)
+    r.steps_peak_kib = std::max(r.steps_peak_kib, k);
   r.kept_step = int(rep.kept_step);
   r.steps_computed = int(rep.steps_taken());
   if(e == SMP::OK) {
@@ -454,7 +457,8 @@ Run run_in_child(const Method& method, Context& c, bool measure, double hard_lim
     const bool reset = reset_peak_memory();
     r.rss_start_kib = proc_status_kib("VmRSS");
     r.status = method.run(c, r);
-    r.peak_kib = reset ? proc_status_kib("VmHWM") : 0.;
+    // the peak since the last reset, which a method may have made between its steps
+    r.peak_kib = reset ? std::max(proc_status_kib("VmHWM"), r.steps_peak_kib) : 0.;
     struct rusage ru;
     getrusage(RUSAGE_SELF, &ru);
     r.maxrss_kib = double(ru.ru_maxrss);
