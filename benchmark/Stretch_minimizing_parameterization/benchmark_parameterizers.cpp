@@ -220,12 +220,17 @@ template <typename NamedParameters>
 SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters& np)
 {
   // the peak of each step (its solve and what comes before it: for U^0, the setup), read
-  // after the step and reset for the next
+  // after the step and reset for the next; on large meshes only, where reading /proc at every
+  // step is lost in the time of a step (not in the milliseconds of a small mesh's call)
+  constexpr std::size_t step_memory_vertices = 100000;
+  const bool per_step = num_vertices(c.mesh) >= step_memory_vertices;
   std::vector<double> peaks;
-  bool reset = reset_peak_memory();
+  bool reset = per_step && reset_peak_memory();
   Stretch_minimizer p(np.visitor([&](const SMP::Stretch_minimizing_step&) {
-    peaks.push_back(reset ? proc_status_kib("VmHWM") : 0.);
-    reset = reset_peak_memory();
+    if(per_step) {
+      peaks.push_back(reset ? proc_status_kib("VmHWM") : 0.);
+      reset = reset_peak_memory();
+    }
     return true;
   }));
   const SMP::Error_code e = timed(r, [&] { return SMP::parameterize(c.mesh, p, c.bhd, c.uv); });
