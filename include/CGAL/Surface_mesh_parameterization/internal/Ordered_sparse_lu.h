@@ -60,7 +60,7 @@ public:
   void compute(const MatrixType& A)
   {
     analyzePattern(A);
-    factorize(A);
+    m_lu->factorize(m_permuted); // permuted by the analysis
   }
 
   Eigen::ComputationInfo info() const { return m_lu ? m_lu->info() : Eigen::InvalidInput; }

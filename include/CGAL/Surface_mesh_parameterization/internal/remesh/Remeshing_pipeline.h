@@ -34,6 +34,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -388,7 +389,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       break;
     per_area *= double(wanted) / double(used - b);
   }
-  mesh = best_mesh;
+  mesh = std::move(best_mesh);
   uv.swap(best_uv);
   r.wrong_faces = best_wrong;
   xyz.clear();
