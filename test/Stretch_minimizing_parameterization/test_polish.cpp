@@ -345,6 +345,63 @@ void test_flat_slivers()
             << free.report().polish.l2_after << std::endl;
 }
 
+// The polisher's default Newton solver, counting its factorizations.
+struct Counting_ldlt : SI::Sander_polish_default_solver
+{
+  std::size_t factorizations = 0;
+  template <typename Matrix>
+  void factorize(const Matrix& a)
+  {
+    ++factorizations;
+    SI::Sander_polish_default_solver::factorize(a);
+  }
+};
+
+// A planar grid whose uv is its own shape scaled, its interior moved by `shift`: with the
+// stretch that close to the least (L2^2 - 1 at most the tolerance) no step can gain enough,
+// and the polish returns before any factorization, the map untouched; a little further, it
+// steps and gains.
+void test_near_isometry()
+{
+  const int n = 12;
+  SI::Flat_triangles m;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) m.xyz.push_back({double(i), double(j), 0.});
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      m.tri.push_back({a, b, d});
+      m.tri.push_back({a, d, c});
+    }
+  std::vector<char> fixed(m.xyz.size(), 0);
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      if(i == 0 || j == 0 || i == n || j == n) fixed[std::size_t(j * (n + 1) + i)] = 1;
+  SI::Sander_polish_settings st;
+  st.direction = SI::Sander_polish_direction::NEWTON;
+  for(const double shift : {1e-5, 3e-2}) {
+    std::vector<Vec2> uv;
+    for(std::size_t v = 0; v < m.xyz.size(); ++v) {
+      const double s = fixed[v] ? 0. : shift * std::sin(3. * m.xyz[v][0]) * std::cos(2. * m.xyz[v][1]);
+      uv.push_back({2. * m.xyz[v][0] + s, 2. * m.xyz[v][1] - s});
+    }
+    const std::vector<Vec2> start = uv;
+    SI::Sander_energy_polisher<Counting_ldlt> polisher;
+    const SI::Sander_polish_result r = polisher.polish(m, {}, fixed, {}, uv, st);
+    SMP_CHECK(r.status == SI::Sander_polish_status::OK, "near isometry: " << r.message);
+    const bool below = r.l2_before * r.l2_before - 1. <= st.tolerance;
+    SMP_CHECK(below == (shift < 1e-3), "near isometry: L2 " << r.l2_before << " for a shift of " << shift);
+    if(below) {
+      SMP_CHECK(r.iterations == 0 && r.stop == SI::Sander_polish_stop::CONVERGED && uv == start &&
+                polisher.newton_solver().factorizations == 0,
+                "near isometry: the polish factored or stepped from L2 " << r.l2_before);
+    } else {
+      SMP_CHECK(r.iterations > 0 && r.l2_after < r.l2_before,
+                "near isometry: no step from L2 " << r.l2_before << " (" << r.iterations << " steps)");
+    }
+  }
+}
+
 int main()
 {
   test_mesh("mannequin-devil.off", 1.316, 1.38);
@@ -355,5 +412,6 @@ int main()
   test_mesh("mesh_with_border.off", 1.093, 0.);
   test_holes();
   test_flat_slivers();
+  test_near_isometry();
   return smp_test::summary();
 }

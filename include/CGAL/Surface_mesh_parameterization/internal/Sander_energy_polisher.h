@@ -166,9 +166,11 @@ public:
     m_mu = 0.;
     double E = energy_at(0.);
     r.energy_before = r.energy_after = m_area_term ? E * m_area_uv : E;
-    // the normalized L2 stretch is at least 1, and 1 for an isometry up to scale only, which no
-    // step can better (checked before the first factorization, which would find it so)
-    if(m_dofs == 0 || r.l2_before <= 1. + 1e-12) {
+    // The normalized L2 stretch is at least 1, and its square is in proportion to E (E * A with
+    // the area term): no step can lower the energy by more than L2^2 - 1 relatively, so below
+    // the tolerance the first step would end the polish, after a factorization (a developable
+    // chart's conformal map, an isometry up to rounding, is one)
+    if(m_dofs == 0 || r.l2_before * r.l2_before - 1. <= settings.tolerance) {
       r.stop = Sander_polish_stop::CONVERGED;
       r.seconds = seconds();
       return r;
@@ -270,6 +272,9 @@ public:
     r.seconds = seconds();
     return r;
   }
+
+  // the solver of the Newton system, as the last polish left it
+  const Solver& newton_solver() const { return m_solver; }
 
 private:
   struct Energy_face
