@@ -345,15 +345,15 @@ void test_flat_slivers()
             << free.report().polish.l2_after << std::endl;
 }
 
-// The polisher's default Newton solver, counting its factorizations.
-struct Counting_ldlt : SI::Sander_polish_default_solver
+// The polisher's default solver, counting its factorizations.
+struct Counting_solver : SI::Sander_vertex_solver
 {
+  using SI::Sander_vertex_solver::Sander_vertex_solver;
   std::size_t factorizations = 0;
-  template <typename Matrix>
   void factorize(const Matrix& a)
   {
     ++factorizations;
-    SI::Sander_polish_default_solver::factorize(a);
+    SI::Sander_vertex_solver::factorize(a);
   }
 };
 
@@ -386,7 +386,7 @@ void test_near_isometry()
       uv.push_back({2. * m.xyz[v][0] + s, 2. * m.xyz[v][1] - s});
     }
     const std::vector<Vec2> start = uv;
-    SI::Sander_energy_polisher<Counting_ldlt> polisher;
+    SI::Sander_energy_polisher<Counting_solver> polisher;
     const SI::Sander_polish_result r = polisher.polish(m, {}, fixed, {}, uv, st);
     SMP_CHECK(r.status == SI::Sander_polish_status::OK, "near isometry: " << r.message);
     const bool below = r.l2_before * r.l2_before - 1. <= st.tolerance;
@@ -402,6 +402,41 @@ void test_near_isometry()
   }
 }
 
+// The Newton system factored by the supernodal method (forced from one row on), its rows in a
+// vertex order given by the caller, or in a minimum degree order: the same polish as the
+// simplicial factorization's, to rounding.
+void test_supernodal_newton()
+{
+  Start s;
+  if(!load_start("three_peaks.off", s)) return;
+  SI::Sander_polish_settings st;
+  st.direction = SI::Sander_polish_direction::NEWTON;
+  st.max_iterations = 8;
+  std::vector<Vec2> simplicial_uv = s.uv;
+  SI::Sander_energy_polisher<Counting_solver> simplicial;
+  const SI::Sander_polish_result reference = simplicial.polish(s.m, s.guard, s.fixed, s.border, simplicial_uv, st);
+  SMP_CHECK(reference.status == SI::Sander_polish_status::OK && reference.iterations > 0 &&
+            !simplicial.newton_solver().supernodal(), "supernodal: the simplicial reference " << reference.message);
+  std::vector<int> rank(s.m.xyz.size()); // the vertices backwards: any order is valid
+  for(std::size_t v = 0; v < rank.size(); ++v) rank[v] = int(rank.size() - 1 - v);
+  for(const bool given : {false, true}) {
+    st.newton_supernodal_rows = 1;
+    st.vertex_rank = given ? &rank : nullptr;
+    std::vector<Vec2> uv = s.uv;
+    SI::Sander_energy_polisher<Counting_solver> supernodal;
+    const SI::Sander_polish_result r = supernodal.polish(s.m, s.guard, s.fixed, s.border, uv, st);
+    SMP_CHECK(r.status == SI::Sander_polish_status::OK && supernodal.newton_solver().supernodal(),
+              "supernodal (order given: " << given << "): " << r.message);
+    SMP_CHECK(r.iterations == reference.iterations && std::abs(r.l2_after - reference.l2_after) < 1e-9 * reference.l2_after,
+              "supernodal (order given: " << given << "): L2 " << r.l2_after << " in " << r.iterations
+              << " steps, simplicial " << reference.l2_after << " in " << reference.iterations);
+    double largest = 0.;
+    for(std::size_t v = 0; v < uv.size(); ++v)
+      largest = (std::max)(largest, std::hypot(uv[v][0] - simplicial_uv[v][0], uv[v][1] - simplicial_uv[v][1]));
+    SMP_CHECK(largest < 1e-8, "supernodal (order given: " << given << "): uv off the simplicial polish by " << largest);
+  }
+}
+
 int main()
 {
   test_mesh("mannequin-devil.off", 1.316, 1.38);
@@ -413,5 +448,6 @@ int main()
   test_holes();
   test_flat_slivers();
   test_near_isometry();
+  test_supernodal_newton();
   return smp_test::summary();
 }

@@ -77,6 +77,9 @@ struct Sander_polish_settings
   // the order in which the proxy and the split systems eliminate the vertices (rank per vertex,
   // see vertex_order.h), shared by the calls on one mesh; null: ordered here
   const std::vector<int>* vertex_rank = nullptr;
+  // NEWTON: from this many rows on, the Newton system is factored by a supernodal method, its
+  // rows in the vertex order (see Sander_vertex_solver)
+  std::size_t newton_supernodal_rows = std::size_t(Sander_vertex_solver::blocked_supernodal_rows);
 };
 
 // What a visitor sees after every Newton step.
@@ -111,15 +114,10 @@ struct Sander_polish_result
   double seconds = 0.;
 };
 
-// The Newton system changes at every step, and is as large as a chart or a disk: Eigen's
-// simplicial LDLT factors it about as fast as CHOLMOD's factorizations (measured on the
-// mannequin head), so there is no SuiteSparse variant.
-typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sander_polish_default_solver;
-
-// `Solver`: an Eigen sparse Cholesky solver reading the lower triangle, of the Newton system;
-// `VertexSolver`: a class with the interface of Sander_vertex_solver (analyzePattern() and
-// compute() with an elimination order), for the proxy and the split systems.
-template <typename Solver = Sander_polish_default_solver, typename VertexSolver = Sander_vertex_solver>
+// `VertexSolver`: a class with the interface of Sander_vertex_solver (constructed from whether
+// the system is definite; analyzePattern() and compute() with an elimination order), for the
+// Newton, the proxy and the split systems.
+template <typename VertexSolver = Sander_vertex_solver>
 class Sander_energy_polisher
 {
 public:
@@ -154,8 +152,11 @@ public:
     std::string why;
     if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
       return fail(Sander_polish_status::BAD_START, why);
-    if(settings.direction != Sander_polish_direction::NEWTON) // the Newton system orders itself
-      order_vertex_systems(m, guard, settings.vertex_rank);
+    m_solver.set_supernodal_rows(Eigen::Index(settings.newton_supernodal_rows));
+    if(settings.direction != Sander_polish_direction::NEWTON || 2 * m_dofs >= settings.newton_supernodal_rows)
+      order_vertex_systems(m, guard, settings.vertex_rank, settings.direction == Sander_polish_direction::NEWTON);
+    else
+      m_order.clear(); // a smaller Newton system orders itself
     r.l2_before = r.l2_after = m_stretch.evaluate(m, uv, settings.threads).l2;
 
     // With holes, a free border or faces without energy (zero 3D area) the uv area of the
@@ -216,7 +217,7 @@ public:
         factored = true;
       } else {
         if(!factored)
-          m_solver.analyzePattern(m_H);
+          m_solver.analyzePattern(m_H, m_order);
         m_solver.factorize(m_H);
         factored = true;
         if(m_solver.info() != Eigen::Success)
@@ -274,7 +275,7 @@ public:
   }
 
   // the solver of the Newton system, as the last polish left it
-  const Solver& newton_solver() const { return m_solver; }
+  const VertexSolver& newton_solver() const { return m_solver; }
 
 private:
   struct Energy_face
@@ -403,8 +404,10 @@ private:
   }
 
   // m_order: the unknowns of the proxy and the split systems in the order of `rank`, or of the
-  // vertex rank computed here if there is none
-  void order_vertex_systems(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<int>* rank)
+  // vertex rank computed here if there is none; with `newton`, the rows of the Newton system
+  // instead (those of u and v of an unknown one after the other)
+  void order_vertex_systems(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<int>* rank,
+                            bool newton)
   {
     std::vector<int> vertex_of(m_dofs);
     for(std::size_t v = 0; v < m_dof.size(); ++v)
@@ -416,6 +419,14 @@ private:
       m_order = rows_in_order(fill_reducing_vertex_rank(m.xyz.size(), m.tri, guard), vertex_of);
     } else {
       m_order.clear();
+    }
+    if(newton && !m_order.empty()) {
+      std::vector<int> rows(2 * m_order.size());
+      for(std::size_t k = 0; k < m_order.size(); ++k) {
+        rows[2 * k] = 2 * m_order[k];
+        rows[2 * k + 1] = 2 * m_order[k] + 1;
+      }
+      m_order.swap(rows);
     }
   }
 
@@ -677,7 +688,7 @@ private:
   std::vector<Triangle> m_guard;           // faces without energy that must stay positive
   std::vector<int> m_border;
   std::vector<int> m_dof;                  // vertex -> unknown, -1 if it does not move
-  std::vector<int> m_order;                // unknowns in the elimination order of the vertex systems
+  std::vector<int> m_order;                // unknowns in the elimination order of the vertex systems (or rows of the Newton system)
   std::size_t m_dofs = 0;
   std::vector<int> m_slot;                 // 36 per energy face: entry of m_H, -1 if none (split: 9, of m_Hs)
   std::vector<Vec2> m_x, m_trial, m_dir, m_current;
@@ -691,7 +702,7 @@ private:
   bool m_split = false;
   Eigen::VectorXd m_g, m_p;
   Eigen::Matrix<double, Eigen::Dynamic, 2> m_rhs, m_pp; // proxy solve, u and v columns
-  Solver m_solver;
+  VertexSolver m_solver{true}; // the Newton system: projected Hessians, definite
   VertexSolver m_proxy_solver, m_split_solver[2];
   Flat_stretch m_stretch;
 };

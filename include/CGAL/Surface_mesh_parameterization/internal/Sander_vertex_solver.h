@@ -4,12 +4,14 @@
 #ifndef CGAL_SMP_INTERNAL_SANDER_VERTEX_SOLVER_H
 #define CGAL_SMP_INTERNAL_SANDER_VERTEX_SOLVER_H
 
-// The solver of the systems with one row per moving vertex, symmetric and positive
-// (semi)definite: the polisher's proxy (factored once) and its two split Newton systems, and the
-// stretch minimizer's systems of symmetric weights (the pattern analysed once, the values
-// factored at every step).
+// The solver of the symmetric positive (semi)definite systems over the moving vertices: the
+// polisher's Newton system (two rows per vertex), its proxy (factored once) and its two split
+// Newton systems, and the stretch minimizer's systems of symmetric weights (the pattern analysed
+// once, the values factored at every step).
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
+#include <CGAL/Surface_mesh_parameterization/internal/Ordered_sparse_lu.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -51,13 +53,13 @@ public:
 };
 
 #if defined(CGAL_SMP_USE_CHOLMOD)
-// CHOLMOD's supernodal LL^T in an order given by rows (no ordering of its own).
+// CHOLMOD's supernodal LL^T in an order given by rows, else in its minimum degree order.
 class Ordered_cholmod : public Eigen::CholmodBase<Eigen::SparseMatrix<double>, Eigen::Lower, Ordered_cholmod>
 {
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
 
-  // `order`: the rows, first eliminated first
+  // `order`: the rows, first eliminated first; empty: CHOLMOD's minimum degree order (AMD)
   void analyze(const Matrix& lower, std::vector<int>& order)
   {
     if(m_cholmodFactor != nullptr) {
@@ -66,12 +68,12 @@ public:
     }
     m_cholmod.print = 0; // its failure is handled by the caller, not printed
     m_cholmod.nmethods = 1;
-    m_cholmod.method[0].ordering = CHOLMOD_GIVEN;
+    m_cholmod.method[0].ordering = order.empty() ? CHOLMOD_AMD : CHOLMOD_GIVEN;
     m_cholmod.postorder = 1;
     m_cholmod.supernodal = CHOLMOD_SUPERNODAL;
     m_cholmod.final_ll = 1;
     cholmod_sparse A = Eigen::viewAsCholmod(lower.selfadjointView<Eigen::Lower>());
-    m_cholmodFactor = cholmod_analyze_p(&A, order.data(), nullptr, 0, &m_cholmod);
+    m_cholmodFactor = cholmod_analyze_p(&A, order.empty() ? nullptr : order.data(), nullptr, 0, &m_cholmod);
     m_isInitialized = true;
     m_info = m_cholmodFactor != nullptr ? Eigen::Success : Eigen::NumericalIssue;
     m_analysisIsOk = m_cholmodFactor != nullptr;
@@ -81,41 +83,49 @@ public:
 #endif
 
 // The factorization of one system, analysed once (`analyzePattern`) and factored for each set of
-// values (`factorize`): Eigen's LDL^T, or, for the positive definite systems of the largest
-// meshes when SuiteSparse's CHOLMOD is used, its supernodal LL^T (through BLAS), in the same order.
+// values (`factorize`): Eigen's simplicial LDL^T, or, for the positive definite systems of many
+// rows, a supernodal factorization, which the simplicial one falls far behind as the systems
+// grow: CHOLMOD's LL^T (through BLAS) in the same order when SuiteSparse's CHOLMOD is used,
+// else Eigen's SparseLU in a minimum degree order (Ordered_sparse_lu).
 class Sander_vertex_solver
 {
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
-#if defined(CGAL_SMP_USE_CHOLMOD)
   // measured on the clamped cotangent system in a METIS order: Eigen's LDL^T is faster at 207k
   // rows, CHOLMOD's supernodal LL^T at 829k
-  static constexpr Eigen::Index supernodal_threshold = 500000;
-#endif
+  static constexpr Eigen::Index default_supernodal_rows = 500000;
+  // The systems of 2 x 2 blocks, u and v of each vertex coupled (LSCM's, the polisher's Newton
+  // system), fill more: the supernodal factorizations overtake the simplicial one at far fewer
+  // rows, and leave it ever further behind above (the benchmark's blocked_solvers measures it).
+  static constexpr Eigen::Index blocked_supernodal_rows = 60000;
 
-  // `definite`: the systems are positive definite, so CHOLMOD's LL^T may factor them (an LL^T
-  // refuses the semidefinite systems whose smallest eigenvalues are at the floor of the projected
-  // Hessians, where the LDL^T factors them)
-  explicit Sander_vertex_solver(bool definite = false)
-#if defined(CGAL_SMP_USE_CHOLMOD)
-    : m_definite(definite)
-#endif
-  {
-    static_cast<void>(definite);
-  }
+  // `definite`: the systems are positive definite, so a supernodal method may factor those of
+  // `supernodal_rows` rows or more (an LL^T refuses the semidefinite systems whose smallest
+  // eigenvalues are at the floor of the projected Hessians, where the LDL^T factors them)
+  explicit Sander_vertex_solver(bool definite = false, Eigen::Index supernodal_rows = default_supernodal_rows)
+    : m_definite(definite), m_supernodal_rows(supernodal_rows)
+  {}
 
-  // `order`: the rows, first eliminated first (see vertex_order.h); empty: Eigen's minimum
-  // degree order
+  // from the next analysis on
+  void set_supernodal_rows(Eigen::Index rows) { m_supernodal_rows = rows; }
+
+  // `order`: the rows, first eliminated first (see vertex_order.h); empty: a minimum degree order
   void analyzePattern(const Matrix& lower, const std::vector<int>& order = std::vector<int>())
   {
+    m_order = order;
+    m_supernodal = m_definite && lower.rows() >= m_supernodal_rows;
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    m_supernodal = m_definite && !order.empty() && lower.rows() >= supernodal_threshold;
     if(m_supernodal) {
-      m_order = order;
       m_cholmod.analyze(lower, m_order);
       if(m_cholmod.info() == Eigen::Success)
         return;
       m_supernodal = false;
+    }
+#else
+    if(m_supernodal) {
+      m_full = lower.selfadjointView<Eigen::Lower>();
+      m_lu.analyzePattern(m_full);
+      return;
     }
 #endif
     m_ldlt.analyze(lower, order);
@@ -123,16 +133,22 @@ public:
 
   void factorize(const Matrix& lower)
   {
-#if defined(CGAL_SMP_USE_CHOLMOD)
     if(m_supernodal) {
+#if defined(CGAL_SMP_USE_CHOLMOD)
       m_cholmod.factorize(lower);
       if(m_cholmod.info() == Eigen::Success)
         return;
+#else
+      m_full = lower.selfadjointView<Eigen::Lower>();
+      m_lu.factorize(m_full);
+      if(m_lu.info() == Eigen::Success)
+        return;
+      m_lu.release();
+#endif
       // not definite to working precision after all: the LDL^T, in the same order
       m_supernodal = false;
       m_ldlt.analyze(lower, m_order);
     }
-#endif
     m_ldlt.factorize(lower);
   }
 
@@ -146,6 +162,8 @@ public:
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
     if(m_supernodal) return m_cholmod.info();
+#else
+    if(m_supernodal) return m_lu.info();
 #endif
     return m_ldlt.info();
   }
@@ -155,20 +173,31 @@ public:
   Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
     typedef Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> Dense;
+    if(m_supernodal) {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
+      return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
+#else
+      return m_lu.solve(b);
 #endif
+    }
     return m_ldlt.solve(b);
   }
+
+  // whether the last factorization was a supernodal one
+  bool supernodal() const { return m_supernodal; }
 
 private:
   Ordered_ldlt m_ldlt;
 #if defined(CGAL_SMP_USE_CHOLMOD)
   Ordered_cholmod m_cholmod;
-  std::vector<int> m_order; // CHOLMOD's, kept for an LDL^T in its place
-  bool m_supernodal = false;
-  bool m_definite = false;
+#else
+  Ordered_sparse_lu m_lu;
+  Matrix m_full; // both triangles: SparseLU reads the whole matrix
 #endif
+  std::vector<int> m_order; // kept for an LDL^T in the place of the supernodal factorization
+  bool m_definite = false;
+  Eigen::Index m_supernodal_rows = default_supernodal_rows;
+  bool m_supernodal = false;
 };
 
 CGAL_SMP_END_SOLVER_NAMESPACE

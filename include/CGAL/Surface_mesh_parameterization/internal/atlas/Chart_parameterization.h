@@ -17,6 +17,7 @@
 #include <CGAL/Surface_mesh_parameterization/Shape_preserving_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/triangulate_loop.h>
@@ -152,6 +153,27 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
   return uv;
 }
 
+// The solver of CGAL's LSCM (through Eigen_solver_traits): its system, positive definite with
+// two vertices pinned, couples u and v like the Newton system, and is factored by the
+// supernodal method from as many rows on.
+class Lscm_system_solver
+{
+public:
+  typedef double Scalar;
+
+  void compute(const Sander_vertex_solver::Matrix& A)
+  {
+    m_solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows);
+    m_solver.compute(A);
+  }
+  Eigen::ComputationInfo info() const { return m_solver.info(); }
+  template <typename Rhs>
+  Eigen::VectorXd solve(const Rhs& b) const { return m_solver.solve(Eigen::VectorXd(b)); }
+
+private:
+  Sander_vertex_solver m_solver{true};
+};
+
 // LSCM's map of the chart polished by free-border Newton steps, if the chart is a disk and
 // LSCM's map of it is a bijection (every face of positive area, the border loop simple: then
 // no two triangles overlap, and the polish keeps it so); false otherwise. The faces of `sm` are
@@ -189,7 +211,7 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   auto vpmap = sm.add_property_map<Chart_vertex, bool>("v:conformal_done", false).first;
   for(Chart_vertex v : vertices(sm))
     put(vimap, v, int(v));
-  LSCM_parameterizer_3<Chart_mesh> lscm;
+  LSCM_parameterizer_3<Chart_mesh, Default, CGAL::Eigen_solver_traits<Lscm_system_solver> > lscm;
   const bool solved = lscm.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
   uv = read_uv(sm, uvmap);
   sm.remove_property_map(uvmap);
