@@ -18,6 +18,7 @@ out=benchmark/results/atlas_sizes.md
   echo
   echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average at the start $(cut -d ' ' -f 1-3 /proc/loadavg);"
   echo "default options (all cores); peak MiB: the process's peak resident memory so far."
+  echo "\`bash scripts/benchmark-atlas-sizes.sh $max\` on commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown)."
   echo
   echo "| mesh | faces | charts | L2 | seams % | utilization | cut s | flatten s | pack s | total s | peak MiB |"
   echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
