@@ -403,8 +403,9 @@ void test_near_isometry()
 }
 
 // The Newton system factored by the supernodal method (forced from one row on), its rows in a
-// vertex order given by the caller, or in a minimum degree order: the same polish as the
-// simplicial factorization's, to rounding.
+// vertex order given by the caller, or in a minimum degree order, through BLAS (CHOLMOD's, when
+// it is used) or not (Eigen's SparseLU): the same polish as the simplicial factorization's, to
+// rounding.
 void test_supernodal_newton()
 {
   Start s;
@@ -419,9 +420,11 @@ void test_supernodal_newton()
             !simplicial.newton_solver().supernodal(), "supernodal: the simplicial reference " << reference.message);
   std::vector<int> rank(s.m.xyz.size()); // the vertices backwards: any order is valid
   for(std::size_t v = 0; v < rank.size(); ++v) rank[v] = int(rank.size() - 1 - v);
-  for(const bool given : {false, true}) {
+  for(const int run : {0, 1, 2, 3}) {
+    const bool given = run % 2 == 1;
     st.newton_supernodal_rows = 1;
     st.vertex_rank = given ? &rank : nullptr;
+    st.supernodal_blas = run < 2;
     std::vector<Vec2> uv = s.uv;
     SI::Sander_energy_polisher<Counting_solver> supernodal;
     const SI::Sander_polish_result r = supernodal.polish(s.m, s.guard, s.fixed, s.border, uv, st);

@@ -80,6 +80,8 @@ struct Sander_polish_settings
   // NEWTON: from this many rows on, the Newton system is factored by a supernodal method, its
   // rows in the vertex order (see Sander_vertex_solver)
   std::size_t newton_supernodal_rows = std::size_t(Sander_vertex_solver::blocked_supernodal_rows);
+  // whether that factorization may call BLAS (see Sander_vertex_solver::set_supernodal_rows())
+  bool supernodal_blas = true;
 };
 
 // What a visitor sees after every Newton step.
@@ -152,7 +154,7 @@ public:
     std::string why;
     if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
       return fail(Sander_polish_status::BAD_START, why);
-    m_solver.set_supernodal_rows(Eigen::Index(settings.newton_supernodal_rows));
+    m_solver.set_supernodal_rows(Eigen::Index(settings.newton_supernodal_rows), settings.supernodal_blas);
     if(settings.direction != Sander_polish_direction::NEWTON || 2 * m_dofs >= settings.newton_supernodal_rows)
       order_vertex_systems(m, guard, settings.vertex_rank, settings.direction == Sander_polish_direction::NEWTON);
     else

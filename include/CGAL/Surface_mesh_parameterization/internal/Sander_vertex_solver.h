@@ -85,8 +85,8 @@ public:
 // The factorization of one system, analysed once (`analyzePattern`) and factored for each set of
 // values (`factorize`): Eigen's simplicial LDL^T, or, for the positive definite systems of many
 // rows, a supernodal factorization, which the simplicial one falls far behind as the systems
-// grow: CHOLMOD's LL^T (through BLAS) in the same order when SuiteSparse's CHOLMOD is used,
-// else Eigen's SparseLU in a minimum degree order (Ordered_sparse_lu).
+// grow: CHOLMOD's LL^T (through BLAS) in the same order when SuiteSparse's CHOLMOD is used and
+// BLAS is allowed, else Eigen's SparseLU in a minimum degree order (Ordered_sparse_lu).
 class Sander_vertex_solver
 {
 public:
@@ -106,45 +106,54 @@ public:
     : m_definite(definite), m_supernodal_rows(supernodal_rows)
   {}
 
-  // from the next analysis on
-  void set_supernodal_rows(Eigen::Index rows) { m_supernodal_rows = rows; }
+  // from the next analysis on; `blas`: CHOLMOD's LL^T (through BLAS) may be the supernodal
+  // factorization, else Eigen's SparseLU (no BLAS: for systems factored on several threads at
+  // once, where a multithreaded BLAS would take more threads than there are cores)
+  void set_supernodal_rows(Eigen::Index rows, bool blas = true)
+  {
+    m_supernodal_rows = rows;
+    m_blas = blas;
+  }
 
   // `order`: the rows, first eliminated first (see vertex_order.h); empty: a minimum degree order
   void analyzePattern(const Matrix& lower, const std::vector<int>& order = std::vector<int>())
   {
     m_order = order;
     m_supernodal = m_definite && lower.rows() >= m_supernodal_rows;
+    m_cholmod_used = false;
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal) {
+    if(m_supernodal && m_blas) {
       m_cholmod.analyze(lower, m_order);
-      if(m_cholmod.info() == Eigen::Success)
-        return;
-      m_supernodal = false;
+      m_cholmod_used = m_cholmod.info() == Eigen::Success;
+      m_supernodal = m_cholmod_used;
     }
-#else
-    if(m_supernodal) {
+#endif
+    if(m_supernodal && !m_cholmod_used) {
       m_full = lower.selfadjointView<Eigen::Lower>();
       m_lu.analyzePattern(m_full);
       return;
     }
-#endif
-    m_ldlt.analyze(lower, order);
+    if(!m_supernodal)
+      m_ldlt.analyze(lower, order);
   }
 
   void factorize(const Matrix& lower)
   {
     if(m_supernodal) {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-      m_cholmod.factorize(lower);
-      if(m_cholmod.info() == Eigen::Success)
-        return;
-#else
-      m_full = lower.selfadjointView<Eigen::Lower>();
-      m_lu.factorize(m_full);
-      if(m_lu.info() == Eigen::Success)
-        return;
-      m_lu.release();
+      if(m_cholmod_used) {
+        m_cholmod.factorize(lower);
+        if(m_cholmod.info() == Eigen::Success)
+          return;
+      }
 #endif
+      if(!m_cholmod_used) {
+        m_full = lower.selfadjointView<Eigen::Lower>();
+        m_lu.factorize(m_full);
+        if(m_lu.info() == Eigen::Success)
+          return;
+        m_lu.release();
+      }
       // not definite to working precision after all: the LDL^T, in the same order
       m_supernodal = false;
       m_ldlt.analyze(lower, m_order);
@@ -161,10 +170,9 @@ public:
   Eigen::ComputationInfo info() const
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal) return m_cholmod.info();
-#else
-    if(m_supernodal) return m_lu.info();
+    if(m_supernodal && m_cholmod_used) return m_cholmod.info();
 #endif
+    if(m_supernodal) return m_lu.info();
     return m_ldlt.info();
   }
 
@@ -172,14 +180,11 @@ public:
   template <typename Rhs>
   Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> solve(const Rhs& b) const
   {
-    typedef Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> Dense;
-    if(m_supernodal) {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-      return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
-#else
-      return m_lu.solve(b);
+    typedef Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> Dense;
+    if(m_supernodal && m_cholmod_used) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
 #endif
-    }
+    if(m_supernodal) return m_lu.solve(b);
     return m_ldlt.solve(b);
   }
 
@@ -190,14 +195,15 @@ private:
   Ordered_ldlt m_ldlt;
 #if defined(CGAL_SMP_USE_CHOLMOD)
   Ordered_cholmod m_cholmod;
-#else
+#endif
   Ordered_sparse_lu m_lu;
   Matrix m_full; // both triangles: SparseLU reads the whole matrix
-#endif
   std::vector<int> m_order; // kept for an LDL^T in the place of the supernodal factorization
   bool m_definite = false;
   Eigen::Index m_supernodal_rows = default_supernodal_rows;
-  bool m_supernodal = false;
+  bool m_blas = true;
+  bool m_supernodal = false;    // the last factorization is a supernodal one
+  bool m_cholmod_used = false;  // and CHOLMOD's
 };
 
 CGAL_SMP_END_SOLVER_NAMESPACE

@@ -155,7 +155,8 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
 
 // The solver of CGAL's LSCM (through Eigen_solver_traits): its system, positive definite with
 // two vertices pinned, couples u and v like the Newton system, and is factored by the
-// supernodal method from as many rows on.
+// supernodal method from as many rows on; like the Newton system's in a chart, without BLAS
+// (the charts are flattened on several threads at once).
 class Lscm_system_solver
 {
 public:
@@ -163,7 +164,7 @@ public:
 
   void compute(const Sander_vertex_solver::Matrix& A)
   {
-    m_solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows);
+    m_solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows, false);
     m_solver.compute(A);
   }
   Eigen::ComputationInfo info() const { return m_solver.info(); }
@@ -231,6 +232,7 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   ps.direction = Sander_polish_direction::NEWTON;
   ps.free_border = true;
   ps.threads = 1;
+  ps.supernodal_blas = false; // charts are flattened on several threads at once
   ps.max_iterations = settings.polish_iterations;
   double energy = HUGE_VAL;
   const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
