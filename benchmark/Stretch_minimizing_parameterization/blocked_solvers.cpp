@@ -4,10 +4,11 @@
 // The factorization of a system of 2 x 2 blocks, u and v of each vertex coupled (the pattern of
 // LSCM's system and of the polisher's Newton system), on a mesh and its Loop refinements: Eigen's
 // simplicial LDL^T in its minimum degree order, as the polisher factors the smaller systems, and
-// Sander_vertex_solver's supernodal factorization (CHOLMOD's LL^T in the METIS vertex order when
-// CGAL_SMP_USE_CHOLMOD is defined, else Eigen's SparseLU in a minimum degree order), as it
-// factors those of Sander_vertex_solver::blocked_supernodal_rows rows or more. The values are
-// made up, symmetric and diagonally dominant; the order and the fill depend on the pattern only.
+// Sander_vertex_solver's supernodal factorizations, as it factors those of
+// Sander_vertex_solver::blocked_supernodal_rows rows or more: CHOLMOD's LL^T in the METIS vertex
+// order when CGAL_SMP_USE_CHOLMOD is defined (else this column is SparseLU's too), and Eigen's
+// SparseLU in a minimum degree order, which calls no BLAS (the atlas's). The values are made up,
+// symmetric and diagonally dominant; the order and the fill depend on the pattern only.
 // One markdown row per level: rows, then the best of a few factorizations (and solves) of each.
 //   blocked_solvers mesh.off LEVELS
 
@@ -83,7 +84,8 @@ int main(int argc, char** argv)
     std::cerr << "cannot read " << argv[1] << "\n";
     return 1;
   }
-  std::cout << "| rows | simplicial LDL^T s | supernodal s | simplicial / supernodal |\n|---:|---:|---:|---:|\n";
+  std::cout << "| rows | simplicial LDL^T s | supernodal s | simplicial / supernodal | supernodal without BLAS s | simplicial / it |\n"
+               "|---:|---:|---:|---:|---:|---:|\n";
   for(int level = 0; level <= std::atoi(argv[2]); ++level) {
     if(level > 0)
       CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
@@ -112,12 +114,19 @@ int main(int argc, char** argv)
     supernodal.analyzePattern(lower, order);
     Eigen::VectorXd y;
     const double supernodal_seconds = best_seconds([&]() { supernodal.factorize(lower); y = supernodal.solve(b); }, runs);
-    if(!supernodal.supernodal() || !((x - y).norm() <= 1e-8 * x.norm())) {
-      std::cerr << "the supernodal factorization failed or disagrees at " << lower.rows() << " rows\n";
+    SI::Sander_vertex_solver without_blas(true);
+    without_blas.set_supernodal_rows(1, false);
+    without_blas.analyzePattern(lower);
+    Eigen::VectorXd z;
+    const double lu_seconds = best_seconds([&]() { without_blas.factorize(lower); z = without_blas.solve(b); }, runs);
+    if(!supernodal.supernodal() || !without_blas.supernodal() || !((x - y).norm() <= 1e-8 * x.norm()) ||
+       !((x - z).norm() <= 1e-8 * x.norm())) {
+      std::cerr << "a supernodal factorization failed or disagrees at " << lower.rows() << " rows\n";
       return 1;
     }
     std::cout << "| " << lower.rows() << " | " << simplicial_seconds << " | " << supernodal_seconds << " | "
-              << simplicial_seconds / supernodal_seconds << " |" << std::endl;
+              << simplicial_seconds / supernodal_seconds << " | " << lu_seconds << " | " << simplicial_seconds / lu_seconds
+              << " |" << std::endl;
   }
   return 0;
 }
