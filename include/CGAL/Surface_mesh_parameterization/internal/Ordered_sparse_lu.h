@@ -40,14 +40,9 @@ public:
   // The order, and the analysis of the permuted pattern.
   void analyzePattern(const MatrixType& A)
   {
-    Eigen::AMDOrdering<int> amd;
-    amd(A, m_p);
-    m_pinv = m_p.inverse();
+    order(A);
     permute(A);
-    m_lu.reset(new Lu);
-    m_lu->isSymmetric(true);
-    m_lu->setPivotThreshold(diagonal_pivot_threshold);
-    m_lu->analyzePattern(m_permuted);
+    analyze();
   }
 
   // `A`: the pattern last analysed
@@ -61,6 +56,21 @@ public:
   {
     analyzePattern(A);
     m_lu->factorize(m_permuted); // permuted by the analysis
+  }
+
+  // The same for a symmetric matrix given by its lower triangle (the upper one is not read),
+  // permuted into both triangles in one pass.
+  void analyze_lower(const MatrixType& lower)
+  {
+    order(lower);
+    permute_lower(lower);
+    analyze();
+  }
+
+  void factorize_lower(const MatrixType& lower)
+  {
+    permute_lower(lower);
+    m_lu->factorize(m_permuted);
   }
 
   Eigen::ComputationInfo info() const { return m_lu ? m_lu->info() : Eigen::InvalidInput; }
@@ -83,9 +93,31 @@ public:
   }
 
 private:
+  // the minimum degree order of the pattern of A + A^T
+  void order(const MatrixType& A)
+  {
+    Eigen::AMDOrdering<int> amd;
+    amd(A, m_p);
+    m_pinv = m_p.inverse();
+  }
+
+  void analyze()
+  {
+    m_lu.reset(new Lu);
+    m_lu->isSymmetric(true);
+    m_lu->setPivotThreshold(diagonal_pivot_threshold);
+    m_lu->analyzePattern(m_permuted);
+  }
+
   void permute(const MatrixType& A)
   {
     m_permuted = m_pinv * A * m_p;
+    m_permuted.makeCompressed();
+  }
+
+  void permute_lower(const MatrixType& lower)
+  {
+    m_permuted = lower.selfadjointView<Eigen::Lower>().twistedBy(m_pinv);
     m_permuted.makeCompressed();
   }
 

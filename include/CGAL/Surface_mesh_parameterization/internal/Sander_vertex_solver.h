@@ -119,43 +119,37 @@ public:
   void analyzePattern(const Matrix& lower, const std::vector<int>& order = std::vector<int>())
   {
     m_order = order;
-    m_supernodal = m_definite && lower.rows() >= m_supernodal_rows;
-    m_cholmod_used = false;
+    m_method = m_definite && lower.rows() >= m_supernodal_rows ? Method::LU : Method::SIMPLICIAL;
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal && m_blas) {
+    if(m_method == Method::LU && m_blas) {
       m_cholmod.analyze(lower, m_order);
-      m_cholmod_used = m_cholmod.info() == Eigen::Success;
-      m_supernodal = m_cholmod_used;
+      m_method = m_cholmod.info() == Eigen::Success ? Method::CHOLMOD : Method::SIMPLICIAL;
     }
 #endif
-    if(m_supernodal && !m_cholmod_used) {
-      m_full = lower.selfadjointView<Eigen::Lower>();
-      m_lu.analyzePattern(m_full);
-      return;
-    }
-    if(!m_supernodal)
+    if(m_method == Method::LU)
+      m_lu.analyze_lower(lower);
+    else if(m_method == Method::SIMPLICIAL)
       m_ldlt.analyze(lower, order);
   }
 
   void factorize(const Matrix& lower)
   {
-    if(m_supernodal) {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-      if(m_cholmod_used) {
-        m_cholmod.factorize(lower);
-        if(m_cholmod.info() == Eigen::Success)
-          return;
-      }
+    if(m_method == Method::CHOLMOD) {
+      m_cholmod.factorize(lower);
+      if(m_cholmod.info() == Eigen::Success)
+        return;
+    }
 #endif
-      if(!m_cholmod_used) {
-        m_full = lower.selfadjointView<Eigen::Lower>();
-        m_lu.factorize(m_full);
-        if(m_lu.info() == Eigen::Success)
-          return;
-        m_lu.release();
-      }
+    if(m_method == Method::LU) {
+      m_lu.factorize_lower(lower);
+      if(m_lu.info() == Eigen::Success)
+        return;
+      m_lu.release();
+    }
+    if(m_method != Method::SIMPLICIAL) {
       // not definite to working precision after all: the LDL^T, in the same order
-      m_supernodal = false;
+      m_method = Method::SIMPLICIAL;
       m_ldlt.analyze(lower, m_order);
     }
     m_ldlt.factorize(lower);
@@ -170,10 +164,9 @@ public:
   Eigen::ComputationInfo info() const
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
-    if(m_supernodal && m_cholmod_used) return m_cholmod.info();
+    if(m_method == Method::CHOLMOD) return m_cholmod.info();
 #endif
-    if(m_supernodal) return m_lu.info();
-    return m_ldlt.info();
+    return m_method == Method::LU ? m_lu.info() : m_ldlt.info();
   }
 
   // one column or several
@@ -182,28 +175,28 @@ public:
   {
 #if defined(CGAL_SMP_USE_CHOLMOD)
     typedef Eigen::Matrix<double, Eigen::Dynamic, Rhs::ColsAtCompileTime> Dense;
-    if(m_supernodal && m_cholmod_used) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
+    if(m_method == Method::CHOLMOD) return m_cholmod.solve(Dense(b)); // CHOLMOD reads a plain matrix
 #endif
-    if(m_supernodal) return m_lu.solve(b);
+    if(m_method == Method::LU) return m_lu.solve(b);
     return m_ldlt.solve(b);
   }
 
   // whether the last factorization was a supernodal one
-  bool supernodal() const { return m_supernodal; }
+  bool supernodal() const { return m_method != Method::SIMPLICIAL; }
 
 private:
+  enum class Method { SIMPLICIAL, CHOLMOD, LU };
+
   Ordered_ldlt m_ldlt;
 #if defined(CGAL_SMP_USE_CHOLMOD)
   Ordered_cholmod m_cholmod;
 #endif
   Ordered_sparse_lu m_lu;
-  Matrix m_full; // both triangles: SparseLU reads the whole matrix
   std::vector<int> m_order; // kept for an LDL^T in the place of the supernodal factorization
   bool m_definite = false;
   Eigen::Index m_supernodal_rows = default_supernodal_rows;
   bool m_blas = true;
-  bool m_supernodal = false;    // the last factorization is a supernodal one
-  bool m_cholmod_used = false;  // and CHOLMOD's
+  Method m_method = Method::SIMPLICIAL; // of the last analysis
 };
 
 CGAL_SMP_END_SOLVER_NAMESPACE

@@ -162,11 +162,8 @@ class Lscm_system_solver
 public:
   typedef double Scalar;
 
-  void compute(const Sander_vertex_solver::Matrix& A)
-  {
-    m_solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows, false);
-    m_solver.compute(A);
-  }
+  Lscm_system_solver() { m_solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows, false); }
+  void compute(const Sander_vertex_solver::Matrix& A) { m_solver.compute(A); }
   Eigen::ComputationInfo info() const { return m_solver.info(); }
   template <typename Rhs>
   Eigen::VectorXd solve(const Rhs& b) const { return m_solver.solve(Eigen::VectorXd(b)); }
