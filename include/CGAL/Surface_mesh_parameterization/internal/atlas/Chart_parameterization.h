@@ -6,10 +6,11 @@
 
 // One chart of the atlas flattened: the chart's triangles made into a Surface_mesh (one vertex
 // per chart vertex), then Sander's stretch lowered with a free border (flip-free, the border
-// never crossing itself) from one of two starts: CGAL's LSCM where its map is a bijection (it
-// is cheap, and often much closer to the least stretch), else this package's stretch-minimizing
-// iteration from a fixed circular border. A chart that closed around a hole is first flattened
-// with the hole kept (LSCM, the hole filled by guard triangles), without the seam to it. A
+// never crossing itself) from one of two starts: the conformal map (LSCM's, Conformal_map.h)
+// where it is a bijection (it is cheap, and often much closer to the least stretch), else this
+// package's stretch-minimizing iteration from a fixed circular border. A chart that closed
+// around a hole is first flattened with the hole kept (the conformal map with the hole filled
+// by guard triangles), without the seam to it. A
 // chart of one triangle is laid out isometrically.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
@@ -19,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_growing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Conformal_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/triangulate_loop.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
@@ -32,7 +34,6 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
-#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
 
 #include <Eigen/SparseLU>
 
@@ -153,25 +154,6 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
   return uv;
 }
 
-// The solver of CGAL's LSCM (through Eigen_solver_traits): its system, positive definite with
-// two vertices pinned, couples u and v like the Newton system, and is factored by the
-// supernodal method from as many rows on; like the Newton system's in a chart, without BLAS
-// (the charts are flattened on several threads at once).
-class Lscm_system_solver
-{
-public:
-  typedef double Scalar;
-
-  Lscm_system_solver() { m_solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows, false); }
-  void compute(const Sander_vertex_solver::Matrix& A) { m_solver.compute(A); }
-  Eigen::ComputationInfo info() const { return m_solver.info(); }
-  template <typename Rhs>
-  Eigen::VectorXd solve(const Rhs& b) const { return m_solver.solve(Eigen::VectorXd(b)); }
-
-private:
-  Sander_vertex_solver m_solver{true};
-};
-
 // LSCM's map of the chart polished by free-border Newton steps, if the chart is a disk and
 // LSCM's map of it is a bijection (every face of positive area, the border loop simple: then
 // no two triangles overlap, and the polish keeps it so); false otherwise. The faces of `sm` are
@@ -186,43 +168,19 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
   if(loops.size() != 1 || euler != 1)
     return false;
-  // a disk and closed pieces can add up to a disk's characteristic; CGAL's LSCM numbers the
-  // unknowns of the piece of `bhd` only, and indexes them by `vimap`: one piece only
+  // a disk and closed pieces can add up to a disk's characteristic: one piece only
   std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> piece;
   CGAL::Polygon_mesh_processing::connected_component(face(opposite(bhd, sm), sm), sm, std::back_inserter(piece));
   if(piece.size() != num_faces(sm))
     return false;
-  // LSCM fixes the chart's extremes along the two longest sides of its bounding box (CGAL's
-  // Two_vertices_parameterizer_3): a chart without extent along two of the axes has none
-  std::array<double, 3> low = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, high = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for(const Vec3& p : flat.xyz)
-    for(std::size_t i = 0; i < 3; ++i) {
-      low[i] = (std::min)(low[i], p[i]);
-      high[i] = (std::max)(high[i], p[i]);
-    }
-  std::array<double, 3> extent = {high[0] - low[0], high[1] - low[1], high[2] - low[2]};
-  std::sort(extent.begin(), extent.end());
-  if(!(extent[1] > 0.))
-    return false;
-  auto uvmap = sm.add_property_map<Chart_vertex, Chart_kernel::Point_2>("v:conformal_uv").first;
-  auto vimap = sm.add_property_map<Chart_vertex, int>("v:conformal_index").first;
-  auto vpmap = sm.add_property_map<Chart_vertex, bool>("v:conformal_done", false).first;
-  for(Chart_vertex v : vertices(sm))
-    put(vimap, v, int(v));
-  LSCM_parameterizer_3<Chart_mesh, Default, CGAL::Eigen_solver_traits<Lscm_system_solver> > lscm;
-  const bool solved = lscm.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
-  uv = read_uv(sm, uvmap);
-  sm.remove_property_map(uvmap);
-  sm.remove_property_map(vimap);
-  sm.remove_property_map(vpmap);
-  if(!solved)
+  std::vector<Triangle> all = flat.tri;
+  all.insert(all.end(), guard.begin(), guard.end());
+  if(!conformal_map(flat.xyz, all, uv))
     return false;
   std::vector<int> border;
   for(Chart_halfedge h : halfedges_around_face(bhd, sm))
     border.push_back(int(target(h, sm)));
   // a map that is a bijection but for a few folded triangles inside is mended where they are
-  std::vector<Triangle> all = flat.tri;
-  all.insert(all.end(), guard.begin(), guard.end());
   repair_interior_folds(sm, flat.xyz, all, uv);
   // the polisher refuses a start with a flipped or flat face, or a border that is not simple
   Sander_polish_settings ps;
