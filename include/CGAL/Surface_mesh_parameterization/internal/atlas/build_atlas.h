@@ -251,8 +251,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   collect(0, n, every);
   // grows chart c again as `parts` charts, the parts `part` gives its triangles (each part in
   // one piece; the part of a polygon is that of its first triangle: a polygon's triangles stay
-  // together); false if one part would hold them all
-  auto split = [&](std::size_t c, std::vector<int> part, int parts) {
+  // together), each within the normal cone of chart c, or whole if `whole`; false if one part
+  // would hold them all
+  auto split = [&](std::size_t c, std::vector<int> part, int parts, bool whole) {
     join_detached_pieces(charts[c].flat, part);
     const std::vector<std::size_t> triangles = charts[c].triangles;
     std::unordered_map<std::size_t, std::size_t> polygon_first;
@@ -271,20 +272,21 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     int made = 0;
     for(std::size_t j = 0; j < in.size(); ++j)
       if(size[j] > 0)
-        made += g.grow(in[j], first + made, angle[c], 0);
+        made += g.grow(in[j], first + made, whole ? 3.14159265358979323846 : angle[c], 0);
     collect(first, made, triangles);
     charts.resize(std::size_t(first + made));
     angle.resize(std::size_t(first + made), angle[c]);
     charts[c] = Chart_map();
     return true;
   };
-  // cuts flattened chart c across its long side, at its narrowest waist about the middle
-  auto cut_across = [&](std::size_t c, const std::vector<double>& along) {
+  // cuts flattened chart c across its long side, at its narrowest waist about the middle (in
+  // two halves grown again whole if `whole`, see split())
+  auto cut_across = [&](std::size_t c, const std::vector<double>& along, bool whole) {
     const double at = cut_position(along, charts[c].flat);
     std::vector<int> half(along.size());
     for(std::size_t i = 0; i < along.size(); ++i)
       half[i] = along[i] < at ? 0 : 1;
-    return split(c, half, 2);
+    return split(c, half, 2, whole);
   };
   // a flattened chart c above the bound is cut in two across its length, or, far above it,
   // into several compact parts at once; one that could not be flattened is grown again with a
@@ -320,7 +322,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     }
     const auto t1 = std::chrono::steady_clock::now();
     const int parts = charts[c].ok ? number_of_parts(charts[c].l2, settings.max_stretch) : 0;
-    if(parts > 2 && split(c, partition_chart(charts[c], parts), parts)) {
+    if(parts > 2 && split(c, partition_chart(charts[c], parts), parts, false)) {
       r.seconds_cutting += seconds_since(t1);
       return;
     }
@@ -328,7 +330,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       const Chart_areas& a = areas[c];
       std::vector<double> along;
       chart_length(charts[c].uv, charts[c].flat.tri, a.uv, a.surface, along);
-      if(cut_across(c, along)) {
+      if(cut_across(c, along, false)) {
         r.seconds_cutting += seconds_since(t1);
         return;
       }
@@ -470,7 +472,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       Chart_map whole = charts[c];
       Chart_growing::Snapshot growing = g.snapshot();
       const auto t3 = std::chrono::steady_clock::now();
-      cut_across(c, along);
+      // the chart is within the bound, and may be a union of joined charts: its halves are
+      // kept whole, not grown again in the normal cone, which would undo the joins
+      cut_across(c, along, true);
       r.seconds_cutting += seconds_since(t3);
       if(charts.size() == before) {
         uncuttable[c] = 1;
