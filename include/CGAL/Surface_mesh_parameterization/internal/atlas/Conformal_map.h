@@ -143,7 +143,8 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
     for(std::size_t k = 0; k < 3; ++k) {
       const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
       const Vec3& o = xyz[std::size_t(t[k])];
-      // E_D = (1/4) sum of cot(angle at o) (u_i - u_j)^2 over the sides
+      // E_D = (1/4) sum over the sides of cot(angle at o) (u_i - u_j)^2: M gains the weight
+      // times cot / 2 at (i, i) and (j, j), less at (i, j) and (j, i)
       const double c = 0.5 * w * dot3(sub3(xyz[std::size_t(i)], o), sub3(xyz[std::size_t(j)], o)) / twice_area;
       for(int d = 0; d < 2; ++d) {
         add(2 * i + d, 2 * i + d, c);
