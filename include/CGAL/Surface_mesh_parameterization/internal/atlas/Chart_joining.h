@@ -86,7 +86,13 @@ join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& 
       std::sort(unions[i].triangles.begin(), unions[i].triangles.end()); // a polygon's triangles in a row
       make_chart_vertices(m, g, unions[i]);
     }
-    parallel_for_each(pairs.size(), threads, [&](std::size_t i) { flatten_chart(unions[i], settings, false); });
+    // the largest first: a large union started last would keep one thread busy alone
+    std::vector<std::size_t> order(pairs.size());
+    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&unions](std::size_t a, std::size_t b) {
+      return unions[a].triangles.size() > unions[b].triangles.size();
+    });
+    parallel_for_each(order.size(), threads, [&](std::size_t k) { flatten_chart(unions[order[k]], settings, false); });
     bool any = false;
     for(std::size_t i = 0; i < pairs.size(); ++i) {
       const std::size_t a = std::size_t(pairs[i].first), b = std::size_t(pairs[i].second);
