@@ -594,7 +594,9 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   const long cells = long((std::max)(settings.resolution, 16u));
   const long pad = long(std::ceil(0.5 * settings.gutter));
   const Packing_result coarse = estimate_packing(in, settings, scale_hint);
-  const double start = coarse.scale > 0. ? coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
+  // the search ends at a square of 98% to 100% of the texture: the coarse scale, a little too
+  // hopeful (its gutter rounds to fewer cells, often none), is aimed at the middle of that window
+  const double start = coarse.scale > 0. ? 0.99 * coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
   Packing_layout best;
   if(!search_layouts(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, settings.goal, best, settings.threads)) {
     // could not fit at any tried scale: one chart per row of a larger square, at a scale where
