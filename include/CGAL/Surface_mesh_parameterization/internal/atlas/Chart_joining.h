@@ -86,12 +86,7 @@ join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& 
       std::sort(unions[i].triangles.begin(), unions[i].triangles.end()); // a polygon's triangles in a row
       make_chart_vertices(m, g, unions[i]);
     }
-    // the largest first: a large union started last would keep one thread busy alone
-    std::vector<std::size_t> order(pairs.size());
-    for(std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&unions](std::size_t a, std::size_t b) {
-      return unions[a].triangles.size() > unions[b].triangles.size();
-    });
+    const std::vector<std::size_t> order = largest_first(unions, 0, unions.size());
     parallel_for_each(order.size(), threads, [&](std::size_t k) { flatten_chart(unions[order[k]], settings, false); });
     bool any = false;
     for(std::size_t i = 0; i < pairs.size(); ++i) {

@@ -78,6 +78,19 @@ struct Chart_parameterization_settings
   double max_stretch = HUGE_VAL;         // a map from LSCM at most this stretched is kept as it is
 };
 
+// The charts from `begin` to `end` by their number of triangles, the largest first (in their
+// order among equals): charts flattened side by side are taken in this order, as a large chart
+// started last would keep one thread busy alone.
+inline std::vector<std::size_t> largest_first(const std::vector<Chart_map>& charts, std::size_t begin, std::size_t end)
+{
+  std::vector<std::size_t> order(end - begin);
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = begin + i;
+  std::stable_sort(order.begin(), order.end(), [&charts](std::size_t a, std::size_t b) {
+    return charts[a].triangles.size() > charts[b].triangles.size();
+  });
+  return order;
+}
+
 // Numbers the chart vertices of `triangles` and fills `chart.flat`.
 inline void make_chart_vertices(const Atlas_triangles& m, Chart_growing& g, Chart_map& chart)
 {

@@ -361,12 +361,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
           charts[c].triangles = members[c];
         make_chart_vertices(m, g, charts[c]);
       }
-      // the largest first: a large chart started last would keep one thread busy alone
-      std::vector<std::size_t> order(end - begin);
-      for(std::size_t i = 0; i < order.size(); ++i) order[i] = begin + i;
-      std::stable_sort(order.begin(), order.end(), [&charts](std::size_t a, std::size_t b) {
-        return charts[a].triangles.size() > charts[b].triangles.size();
-      });
+      const std::vector<std::size_t> order = largest_first(charts, begin, end);
       areas.resize(charts.size());
       parallel_for_each(order.size(), threads, [&](std::size_t i) {
         Chart_map& chart = charts[order[i]];
