@@ -4,7 +4,9 @@
 // Pictures of a parameterized triangle mesh, written as PNG: the uv layout coloured by stretch
 // (Cairo), the checkerboard texture itself, and the surface rendered off-screen (OSMesa, Mesa's
 // software OpenGL) with the checkerboard or with a stretch colour map. Kept free of CGAL so that
-// it compiles fast in a translation unit of its own.
+// it compiles fast in a translation unit of its own. The surface renderer lives in a module of
+// its own (render_surface.cpp), loaded on first use: OSMesa brings LLVM, whose loading would
+// otherwise cost every run of the tools, pictures or not, a noticeable startup time.
 
 #ifndef SMP_TOOLS_RENDER_H
 #define SMP_TOOLS_RENDER_H
@@ -29,6 +31,10 @@ struct Textured_mesh
 // dark red; degenerate faces (value <= 0 or not finite) are black.
 std::array<double, 3> stretch_color(double stretch);
 
+// Writes RGBA rows stored bottom-up (OpenGL's order) as an opaque PNG. False on failure (nothing
+// is left then).
+bool write_rgba_png(const std::string& file, const std::vector<unsigned char>& rgba, int width, int height);
+
 // Writes a size x size checkerboard with `checks` squares per side. Returns false on failure.
 bool write_checkerboard_png(const std::string& file, int size, int checks);
 
@@ -43,9 +49,20 @@ bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int
 // around it (at 0 the viewer is on the -y side of the model for z up, on the +z side otherwise)
 // and `pitch` degrees above, either textured by the checkerboard (`checks` per unit of uv) or
 // coloured by stretch (light grey without `mesh.face_stretch`), with the triangles' edges drawn
-// if `edges`. Returns an empty string on success, else what went wrong.
+// if `edges`. Returns an empty string on success, else what went wrong (the module that renders
+// could not be loaded, for one).
 std::string render_surface_png(const std::string& file, const Textured_mesh& mesh, int width, int height,
                                int up, double yaw, double pitch, bool checkerboard, int checks, bool edges = false);
+
+// Loads the surface renderer's module if it is not yet loaded: an empty string if it is there,
+// else why not. The tools call it before they start, so that a missing module stops them before
+// they write anything.
+std::string load_surface_renderer();
+
+// The signature of render_surface_png(), which the module exports as
+// `smp_tools_render_surface_png` (render_surface.cpp).
+typedef std::string (*Render_surface_function)(const std::string&, const Textured_mesh&, int, int, int, double,
+                                               double, bool, int, bool);
 
 } // namespace smp_tools
 

@@ -395,6 +395,29 @@ void check_remesh()
   SMP_CHECK(left == 0, "smp-remesh: " << left << " files left by the failed runs");
 }
 
+// The surface renderer is a module loaded at run time: a tool without it stops before it
+// writes anything when pictures are asked for, and runs in full without them.
+void check_missing_renderer()
+{
+  fs::remove_all("lone");
+  fs::create_directories("lone");
+  for(const std::string tool : {std::string(SMP_TOOL), std::string(SMP_REMESH_TOOL)})
+    fs::copy_file(tool, fs::path("lone") / fs::path(tool).filename());
+  const std::string parameterize = "lone/" + fs::path(SMP_TOOL).filename().string();
+  const std::string remesh = "lone/" + fs::path(SMP_REMESH_TOOL).filename().string();
+  const std::string nefertiti = smp_test::data_file("nefertiti.off");
+  check_error("no renderer", nefertiti + " -o lone/out", "renderer", parameterize);
+  check_error("no renderer, atlas", nefertiti + " --atlas -o lone/out_atlas", "renderer", parameterize);
+  check_error("remesh: no renderer", nefertiti + " -n 300 -o lone/remeshed.off --picture lone/remeshed.png",
+              "renderer", remesh);
+  SMP_CHECK(!fs::exists("lone/out") && !fs::exists("lone/out_atlas") && !fs::exists("lone/remeshed.off"),
+            "a run that had no renderer wrote something");
+  SMP_CHECK(run(nefertiti + " -q --no-pictures -o lone/out", parameterize).status == 0 &&
+            fs::exists("lone/out/nefertiti.obj"), "no run without the renderer and without pictures");
+  SMP_CHECK(run(nefertiti + " -n 300 -q -o lone/remeshed.off", remesh).status == 0 && fs::exists("lone/remeshed.off"),
+            "smp-remesh: no run without the renderer and without a picture");
+}
+
 int main()
 {
   check_outputs();
@@ -402,5 +425,6 @@ int main()
   check_isolated_vertex();
   check_atlas();
   check_remesh();
+  check_missing_renderer();
   return smp_test::summary();
 }
