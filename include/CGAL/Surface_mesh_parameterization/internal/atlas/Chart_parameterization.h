@@ -197,7 +197,11 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   repair_interior_folds(sm, flat.xyz, all, uv);
   // the polisher refuses a start with a flipped or flat face, or a border that is not simple
   Sander_polish_settings ps;
-  ps.direction = Sander_polish_direction::NEWTON;
+  // A map within the bound is only refined: the split Newton steps (u and v apart, an eighth of
+  // the flops to factor) do that about as well as the coupled ones. A map above it may have far
+  // to go to come under the bound, which the coupled steps cover in fewer steps.
+  ps.direction = Flat_stretch().evaluate(flat, uv).l2 <= settings.max_stretch ? Sander_polish_direction::SPLIT_NEWTON
+                                                                             : Sander_polish_direction::NEWTON;
   ps.free_border = true;
   ps.threads = 1;
   ps.supernodal_blas = false; // charts are flattened on several threads at once
