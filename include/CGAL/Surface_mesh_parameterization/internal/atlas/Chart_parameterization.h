@@ -76,6 +76,7 @@ struct Chart_parameterization_settings
   // is polished on (whether it ends within the bound, and where it is cut if not, depend on it).
   double polish_tolerance = 1e-4;
   double max_stretch = HUGE_VAL;         // a map from LSCM at most this stretched is kept as it is
+  unsigned int threads = 1;              // of the polish of one chart (the map does not depend on it)
 };
 
 // The charts from `begin` to `end` by their number of triangles, the largest first (in their
@@ -89,6 +90,21 @@ inline std::vector<std::size_t> largest_first(const std::vector<Chart_map>& char
     return charts[a].triangles.size() > charts[b].triangles.size();
   });
   return order;
+}
+
+// The settings of the chart at `order[k]` of charts flattened side by side in `order` (see
+// largest_first()) on `threads` threads: a chart of more than half of their triangles, the
+// first, runs mostly alone, and its polish takes every thread; the others take one.
+inline Chart_parameterization_settings settings_in_batch(const std::vector<Chart_map>& charts,
+                                                          const std::vector<std::size_t>& order, std::size_t k,
+                                                          const Chart_parameterization_settings& settings,
+                                                          unsigned int threads)
+{
+  Chart_parameterization_settings s = settings;
+  std::size_t total = 0;
+  for(std::size_t c : order) total += charts[c].triangles.size();
+  s.threads = k == 0 && 2 * charts[order[0]].triangles.size() > total ? threads : 1u;
+  return s;
 }
 
 // Numbers the chart vertices of `triangles` and fills `chart.flat`.
@@ -203,7 +219,7 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   ps.direction = Flat_stretch().evaluate(flat, uv).l2 <= settings.max_stretch ? Sander_polish_direction::SPLIT_NEWTON
                                                                              : Sander_polish_direction::NEWTON;
   ps.free_border = true;
-  ps.threads = 1;
+  ps.threads = settings.threads;
   ps.supernodal_blas = false; // charts are flattened on several threads at once
   ps.max_iterations = settings.polish_iterations;
   double energy = HUGE_VAL;

@@ -365,7 +365,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       areas.resize(charts.size());
       parallel_for_each(order.size(), threads, [&](std::size_t i) {
         Chart_map& chart = charts[order[i]];
-        flatten_chart(chart, settings.chart);
+        flatten_chart(chart, settings_in_batch(charts, order, i, settings.chart, threads));
         areas[order[i]] = chart.ok ? chart_areas(chart) : Chart_areas(); // a failed chart has no uv
       });
       r.seconds_parameterization += seconds_since(t1);
