@@ -486,10 +486,15 @@ private:
   {
     const Eigen::Index n = Eigen::Index(m_dofs);
     bool ok[2] = {false, false};
+    // the two systems share their pattern: a minimum degree order is found once for both
+    std::vector<int> own;
+    if(analyse && m_order.empty())
+      own = minimum_degree_order(m_Hs[0]);
+    const std::vector<int>& order = own.empty() ? m_order : own;
     parallel_for_each(2, (std::min)(threads, 2u), [&](std::size_t c) {
       VertexSolver& solver = m_split_solver[c];
       if(analyse)
-        solver.analyzePattern(m_Hs[c], m_order);
+        solver.analyzePattern(m_Hs[c], order);
       solver.factorize(m_Hs[c]);
       if(solver.info() != Eigen::Success)
         return;

@@ -27,6 +27,17 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
+// The minimum degree order in which Eigen's simplicial LDL^T of `lower` (a lower triangle)
+// would eliminate the rows, first eliminated first: given to several systems of one pattern, it
+// is computed once and the factorizations are the same.
+inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& lower)
+{
+  const Eigen::SparseMatrix<double> full = lower.selfadjointView<Eigen::Lower>();
+  Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
+  Eigen::AMDOrdering<int>()(full, order);
+  return std::vector<int>(order.indices().data(), order.indices().data() + order.indices().size());
+}
+
 // Eigen's simplicial LDL^T, in its own minimum degree order or in an order given by rows
 // (vertex_order.h: one nested-dissection order for all the systems of a mesh).
 class Ordered_ldlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
