@@ -41,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <functional>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -70,7 +71,7 @@ struct Chart_map
 struct Chart_parameterization_settings
 {
   unsigned int polish_iterations = 10;   // free-border Newton steps
-  // the polish of a map from LSCM that is within `max_stretch` ends at a step that lowers the
+  // the Newton steps of a map that is within `max_stretch` end at a step that lowers the
   // energy by less than this, relatively: coarser than the polisher's own tolerance, as each of
   // the last steps costs a factorization for a gain far below the bound. A map above the bound
   // is polished on (whether it ends within the bound, and where it is cut if not, depend on it).
@@ -235,8 +236,8 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
 
 // The stretch-minimizing parameterizer (LOWEST_STRETCH from a circular border, then the polish
 // with a free border); false if it fails or flattens only part of the chart.
-inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd, unsigned int polish_iterations,
-                                            std::vector<Vec2>& uv)
+inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd,
+                                            const Chart_parameterization_settings& settings, std::vector<Vec2>& uv)
 {
   auto uvmap = sm.add_property_map<Chart_vertex, Chart_kernel::Point_2>("v:uv").first;
   auto vimap = sm.add_property_map<Chart_vertex, int>("v:index").first;
@@ -250,8 +251,17 @@ inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd, 
   // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
   // border) would make a flat triangle on a side of a square
   typedef Shape_preserving_parameterizer_3<Chart_mesh, Circular_border_arc_length_parameterizer_3<Chart_mesh>, Solver> Initial;
+  // the Newton steps end as those from the conformal map do: at a step that gains little, once
+  // within the bound (the energy goes as the square of the L2 stretch)
+  double last_l2 = HUGE_VAL;
+  const std::function<bool(const Stretch_minimizing_step&)> enough = [&](const Stretch_minimizing_step& step) {
+    const double before = last_l2, l2 = step.l2_stretch;
+    last_l2 = l2;
+    if(!step.polish || step.descent) return true;
+    return before * before - l2 * l2 > settings.polish_tolerance * l2 * l2 || !(l2 <= settings.max_stretch);
+  };
   Stretch_minimizing_parameterizer_3<Chart_mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
-      .polish_iterations(polish_iterations).free_border(true).number_of_threads(1u));
+      .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u).visitor(enough));
   bool ok = p.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
   // only the piece of `bhd` is flattened: a chart of pieces that touch at a repeated
   // position only (not at a chart vertex) is split like a failed one
@@ -493,7 +503,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     keep();
   }
   chart.ok = false;
-  if(minimize && flatten_by_stretch_minimization(sm, bhd, settings.polish_iterations, chart.uv)) {
+  if(minimize && flatten_by_stretch_minimization(sm, bhd, settings, chart.uv)) {
     measure_chart(chart);
     keep();
   }
