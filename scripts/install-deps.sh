@@ -7,7 +7,7 @@ set -euo pipefail
 # fronts are small, threads gained nothing here) replaces the reference BLAS under UMFPACK
 # through Debian's alternatives: U^opt on 830k vertices went from 42 s to 20 s.
 packages=(g++ cmake make pkg-config libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev
-          libcairo2-dev libosmesa6-dev libsuitesparse-dev libopenblas0-serial nlohmann-json3-dev
+          libcairo2-dev libpng-dev libosmesa6-dev libsuitesparse-dev libopenblas0-serial nlohmann-json3-dev
           libboost-program-options-dev "$@")
 
 missing=()

@@ -4,11 +4,13 @@
 #include "render.h"
 
 #include <cairo.h>
+#include <png.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
+#include <cstring>
 
 namespace smp_tools {
 
@@ -64,17 +66,28 @@ std::array<double, 3> stretch_color(double s)
 
 bool write_checkerboard_png(const std::string& file, int size, int checks)
 {
-  std::vector<unsigned char> rgba(std::size_t(size) * size * 4);
-  for(int y = 0; y < size; ++y)
-    for(int x = 0; x < size; ++x) {
-      const bool dark = ((x * checks / size) + (y * checks / size)) % 2 == 1;
-      unsigned char* p = &rgba[(std::size_t(y) * size + x) * 4];
-      p[0] = dark ? 40 : 235;
-      p[1] = dark ? 60 : 235;
-      p[2] = dark ? 120 : 225;
-      p[3] = 255;
-    }
-  return write_rgba_png(file, rgba, size, size);
+  // two colours: an image of palette indices, a fraction of the bytes of RGBA to compress (it
+  // is written on every run, pictures or not, as the texture of the OBJ)
+  std::vector<unsigned char> index(std::size_t(size) * std::size_t(size));
+  for(int y = 0; y < size; ++y) // rows top to bottom; the light check at the bottom left (uv 0, 0)
+    for(int x = 0; x < size; ++x)
+      index[std::size_t(y) * std::size_t(size) + std::size_t(x)] =
+        (unsigned char)(((x * checks / size) + ((size - 1 - y) * checks / size)) % 2);
+  const unsigned char palette[6] = {235, 235, 225, 40, 60, 120};
+  png_image image;
+  std::memset(&image, 0, sizeof(image));
+  image.version = PNG_IMAGE_VERSION;
+  image.width = png_uint_32(size);
+  image.height = png_uint_32(size);
+  image.format = PNG_FORMAT_RGB_COLORMAP;
+  image.colormap_entries = 2;
+  const std::string temporary = file + ".part";
+  const bool ok = png_image_write_to_file(&image, temporary.c_str(), 0, index.data(), size, palette) != 0;
+  png_image_free(&image);
+  if(ok && std::rename(temporary.c_str(), file.c_str()) == 0)
+    return true;
+  std::remove(temporary.c_str());
+  return false;
 }
 
 std::array<double, 3> chart_color(int chart)

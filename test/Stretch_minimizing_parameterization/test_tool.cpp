@@ -20,6 +20,7 @@
 #include <cairo.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -92,6 +93,29 @@ bool png_facts(const std::string& file, int& width, int& height, double& spread)
   return true;
 }
 
+// The texture of the OBJ: 512 x 512, 16 checks a side of a light and a dark colour, the light
+// one at the bottom left (uv 0, 0).
+void check_checkerboard(const std::string& file)
+{
+  cairo_surface_t* s = cairo_image_surface_create_from_png(file.c_str());
+  const bool read = cairo_surface_status(s) == CAIRO_STATUS_SUCCESS;
+  SMP_CHECK(read && cairo_image_surface_get_width(s) == 512 && cairo_image_surface_get_height(s) == 512,
+            file << ": not a 512 x 512 PNG");
+  if(read && cairo_image_surface_get_width(s) == 512 && cairo_image_surface_get_height(s) == 512) {
+    const int stride = cairo_image_surface_get_stride(s);
+    const unsigned char* data = cairo_image_surface_get_data(s);
+    std::size_t wrong = 0;
+    for(int y = 0; y < 512; ++y)
+      for(int x = 0; x < 512; ++x) {
+        const bool dark = (x / 32 + (511 - y) / 32) % 2 == 1;
+        const std::uint32_t pixel = reinterpret_cast<const std::uint32_t*>(data + std::size_t(y) * stride)[x];
+        wrong += (pixel & 0xffffffu) != (dark ? 0x283c78u : 0xebebe1u); // (40, 60, 120), (235, 235, 225)
+      }
+    SMP_CHECK(wrong == 0, file << ": " << wrong << " pixels off the checkerboard");
+  }
+  cairo_surface_destroy(s);
+}
+
 void check_outputs()
 {
   const std::string input = smp_test::data_file("nefertiti.off");
@@ -127,6 +151,7 @@ void check_outputs()
     else if(key == "mtllib") mtl = true;
   }
   SMP_CHECK(mtl && fs::exists("out_nefertiti/nefertiti.mtl") && fs::exists("out_nefertiti/checker.png"), "MTL or texture missing");
+  check_checkerboard("out_nefertiti/checker.png");
   SMP_CHECK(v.size() == num_vertices(expected) && vt.size() == v.size() && f == num_faces(expected),
             "OBJ has " << v.size() << " v, " << vt.size() << " vt, " << f << " f");
   double err = 0.;
