@@ -150,10 +150,6 @@ Options parse(int argc, char** argv)
   if(!(o.max_stretch >= 1.)) die("option --max-stretch: give a number of at least 1", 2);
   if(!(o.gutter >= 0. && o.gutter <= 64.)) die("option --gutter: give a number of texels from 0 to 64", 2);
   o.pictures = !no_pictures;
-  if(o.pictures) {
-    const std::string missing = smp_tools::load_surface_renderer();
-    if(!missing.empty()) die(missing + " (--no-pictures runs without it)");
-  }
 
   const std::vector<std::string> methods = {"uopt", "u1", "u0", "mvc", "dcm", "dap", "lscm", "arap"};
   if(std::find(methods.begin(), methods.end(), o.method) == methods.end())
@@ -182,6 +178,10 @@ Options parse(int argc, char** argv)
     die("--atlas cuts and lays out every part itself: leave out --cut and --charts", 2);
   if(o.output.empty())
     o.output = fs::path(o.input).stem().string() + (o.atlas ? "_atlas" : "_uv");
+  if(o.pictures) {
+    const std::string missing = smp_tools::load_surface_renderer();
+    if(!missing.empty()) die(missing + " (--no-pictures runs without it)");
+  }
   return o;
 }
 

@@ -97,10 +97,6 @@ Options parse(int argc, char** argv)
     die("option --threads: give a whole number from 0 to 1024", 2);
   if(!o.picture.empty() && smp_tools::internal::lower_extension(o.picture) != ".png")
     die("the picture must end in .png: " + o.picture, 2);
-  if(!o.picture.empty()) {
-    const std::string missing = smp_tools::load_surface_renderer();
-    if(!missing.empty()) die(missing);
-  }
   if(o.size < 16 || o.size > 8192)
     die("option --size: give a whole number from 16 to 8192", 2);
   if(up != "x" && up != "y" && up != "z")
@@ -108,6 +104,10 @@ Options parse(int argc, char** argv)
   o.up = up[0] - 'x';
   if(o.report.empty())
     o.report = fs::path(o.output).replace_extension(".json").string();
+  if(!o.picture.empty()) {
+    const std::string missing = smp_tools::load_surface_renderer();
+    if(!missing.empty()) die(missing);
+  }
   return o;
 }
 
