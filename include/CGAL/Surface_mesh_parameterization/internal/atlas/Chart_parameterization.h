@@ -78,6 +78,9 @@ struct Chart_parameterization_settings
   double polish_tolerance = 1e-4;
   double max_stretch = HUGE_VAL;         // a map from LSCM at most this stretched is kept as it is
   unsigned int threads = 1;              // of the polish of one chart (the map does not depend on it)
+  // charts of this many vertices or more are polished by split Newton steps, within the bound
+  // or not (below, by the coupled steps where the start is above the bound)
+  std::size_t split_newton_vertices = 10000;
 };
 
 // The charts from `begin` to `end` by their number of triangles, the largest first (in their
@@ -216,9 +219,11 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   Sander_polish_settings ps;
   // A map within the bound is only refined: the split Newton steps (u and v apart, an eighth of
   // the flops to factor) do that about as well as the coupled ones. A map above it may have far
-  // to go to come under the bound, which the coupled steps cover in fewer steps.
-  ps.direction = Flat_stretch().evaluate(flat, uv).l2 <= settings.max_stretch ? Sander_polish_direction::SPLIT_NEWTON
-                                                                             : Sander_polish_direction::NEWTON;
+  // to go to come under the bound, which the coupled steps cover in fewer steps, unless the
+  // chart is large: the coupled factorizations then cost more than the extra split steps.
+  const bool split = flat.xyz.size() >= settings.split_newton_vertices ||
+                     Flat_stretch().evaluate(flat, uv).l2 <= settings.max_stretch;
+  ps.direction = split ? Sander_polish_direction::SPLIT_NEWTON : Sander_polish_direction::NEWTON;
   ps.free_border = true;
   ps.threads = settings.threads;
   ps.supernodal_blas = false; // charts are flattened on several threads at once
