@@ -69,11 +69,11 @@ bool write_checkerboard_png(const std::string& file, int size, int checks)
   // two colours: an image of palette indices, a fraction of the bytes of RGBA to compress (it
   // is written on every run, pictures or not, as the texture of the OBJ)
   std::vector<unsigned char> index(std::size_t(size) * std::size_t(size));
-  for(int y = 0; y < size; ++y) // rows top to bottom; the light check at the bottom left (uv 0, 0)
+  for(int y = 0; y < size; ++y) // PNG rows go top to bottom
     for(int x = 0; x < size; ++x)
-      index[std::size_t(y) * std::size_t(size) + std::size_t(x)] =
-        (unsigned char)(((x * checks / size) + ((size - 1 - y) * checks / size)) % 2);
-  const unsigned char palette[6] = {235, 235, 225, 40, 60, 120};
+      index[std::size_t(y) * std::size_t(size) + std::size_t(x)] = checker_is_dark(x, size - 1 - y, size, checks);
+  const std::array<unsigned char, 3> light = checker_color(false), dark = checker_color(true);
+  const unsigned char palette[6] = {light[0], light[1], light[2], dark[0], dark[1], dark[2]};
   png_image image;
   std::memset(&image, 0, sizeof(image));
   image.version = PNG_IMAGE_VERSION;

@@ -35,6 +35,19 @@ std::array<double, 3> stretch_color(double stretch);
 // is left then).
 bool write_rgba_png(const std::string& file, const std::vector<unsigned char>& rgba, int width, int height);
 
+// The checkerboard of the texture, `checks` squares a side on `size` x `size` texels: whether
+// texel (x, y), y counted upwards (uv (0, 0) at the bottom left, in a light square), is dark.
+inline bool checker_is_dark(int x, int y, int size, int checks)
+{
+  return ((x * checks / size) + (y * checks / size)) % 2 == 1;
+}
+
+// The RGB colour of a light or a dark square of the checkerboard.
+inline std::array<unsigned char, 3> checker_color(bool dark)
+{
+  return dark ? std::array<unsigned char, 3>{{40, 60, 120}} : std::array<unsigned char, 3>{{235, 235, 225}};
+}
+
 // Writes a size x size checkerboard with `checks` squares per side. Returns false on failure.
 bool write_checkerboard_png(const std::string& file, int size, int checks);
 

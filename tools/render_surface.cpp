@@ -91,9 +91,8 @@ std::string render_surface(const std::string& file, const Textured_mesh& mesh, i
     std::vector<unsigned char> texels(std::size_t(size) * size * 3);
     for(int y = 0; y < size; ++y)
       for(int x = 0; x < size; ++x) {
-        const bool dark = ((x * checks / size) + (y * checks / size)) % 2 == 1;
-        unsigned char* p = &texels[(std::size_t(y) * size + x) * 3];
-        p[0] = dark ? 40 : 235; p[1] = dark ? 60 : 235; p[2] = dark ? 120 : 225;
+        const std::array<unsigned char, 3> color = checker_color(checker_is_dark(x, y, size, checks));
+        std::copy(color.begin(), color.end(), &texels[(std::size_t(y) * size + x) * 3]);
       }
     glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_2D, texture);

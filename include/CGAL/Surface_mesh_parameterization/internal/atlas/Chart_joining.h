@@ -87,8 +87,9 @@ join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& 
       make_chart_vertices(m, g, unions[i]);
     }
     const std::vector<std::size_t> order = largest_first(unions, 0, unions.size());
+    const Chart_parameterization_settings first = first_in_batch(unions, order, settings, threads);
     parallel_for_each(order.size(), threads, [&](std::size_t k) {
-      flatten_chart(unions[order[k]], settings_in_batch(unions, order, k, settings, threads), false);
+      flatten_chart(unions[order[k]], k == 0 ? first : settings, false);
     });
     bool any = false;
     for(std::size_t i = 0; i < pairs.size(); ++i) {

@@ -96,19 +96,28 @@ inline std::vector<std::size_t> largest_first(const std::vector<Chart_map>& char
   return order;
 }
 
-// The settings of the chart at `order[k]` of charts flattened side by side in `order` (see
-// largest_first()) on `threads` threads: a chart of more than half of their triangles, the
-// first, runs mostly alone, and its polish takes every thread; the others take one.
-inline Chart_parameterization_settings settings_in_batch(const std::vector<Chart_map>& charts,
-                                                          const std::vector<std::size_t>& order, std::size_t k,
-                                                          const Chart_parameterization_settings& settings,
-                                                          unsigned int threads)
+// The settings of the first chart of `order` (see largest_first()), charts flattened side by
+// side on `threads` threads: a chart of more than half of their triangles runs mostly alone,
+// and its polish takes every thread; the others take one (`settings.threads`).
+inline Chart_parameterization_settings first_in_batch(const std::vector<Chart_map>& charts,
+                                                       const std::vector<std::size_t>& order,
+                                                       const Chart_parameterization_settings& settings,
+                                                       unsigned int threads)
 {
-  Chart_parameterization_settings s = settings;
+  Chart_parameterization_settings first = settings;
   std::size_t total = 0;
   for(std::size_t c : order) total += charts[c].triangles.size();
-  s.threads = k == 0 && 2 * charts[order[0]].triangles.size() > total ? threads : 1u;
-  return s;
+  if(!order.empty() && 2 * charts[order[0]].triangles.size() > total)
+    first.threads = threads;
+  return first;
+}
+
+// Whether the Newton steps of a chart go on after a step that took their energy from `before`
+// to `after` (the normalized L2 stretch `l2` then): while a step gains more than
+// `polish_tolerance` relatively, or the map is above the bound.
+inline bool polish_goes_on(double before, double after, double l2, const Chart_parameterization_settings& settings)
+{
+  return before - after > settings.polish_tolerance * after || !(l2 <= settings.max_stretch);
 }
 
 // Numbers the chart vertices of `triangles` and fills `chart.flat`.
@@ -230,9 +239,9 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   ps.max_iterations = settings.polish_iterations;
   double energy = HUGE_VAL;
   const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
-    const bool gained = energy - step.energy > settings.polish_tolerance * step.energy;
+    const double before = energy;
     energy = step.energy;
-    return gained || !(step.l2_stretch <= settings.max_stretch);
+    return polish_goes_on(before, step.energy, step.l2_stretch, settings);
   };
   Sander_energy_polisher<> polisher;
   return polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
@@ -256,14 +265,13 @@ inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd,
   // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
   // border) would make a flat triangle on a side of a square
   typedef Shape_preserving_parameterizer_3<Chart_mesh, Circular_border_arc_length_parameterizer_3<Chart_mesh>, Solver> Initial;
-  // the Newton steps end as those from the conformal map do: at a step that gains little, once
-  // within the bound (the energy goes as the square of the L2 stretch)
+  // the Newton steps end as those from the conformal map do (the energy goes as the square of
+  // the L2 stretch)
   double last_l2 = HUGE_VAL;
   const std::function<bool(const Stretch_minimizing_step&)> enough = [&](const Stretch_minimizing_step& step) {
     const double before = last_l2, l2 = step.l2_stretch;
     last_l2 = l2;
-    if(!step.polish || step.descent) return true;
-    return before * before - l2 * l2 > settings.polish_tolerance * l2 * l2 || !(l2 <= settings.max_stretch);
+    return !step.polish || step.descent || polish_goes_on(before * before, l2 * l2, l2, settings);
   };
   Stretch_minimizing_parameterizer_3<Chart_mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
       .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u).visitor(enough));

@@ -362,10 +362,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         make_chart_vertices(m, g, charts[c]);
       }
       const std::vector<std::size_t> order = largest_first(charts, begin, end);
+      const Chart_parameterization_settings first = first_in_batch(charts, order, settings.chart, threads);
       areas.resize(charts.size());
       parallel_for_each(order.size(), threads, [&](std::size_t i) {
         Chart_map& chart = charts[order[i]];
-        flatten_chart(chart, settings_in_batch(charts, order, i, settings.chart, threads));
+        flatten_chart(chart, i == 0 ? first : settings.chart);
         areas[order[i]] = chart.ok ? chart_areas(chart) : Chart_areas(); // a failed chart has no uv
       });
       r.seconds_parameterization += seconds_since(t1);
