@@ -705,8 +705,8 @@ SMP::internal::Chart_map cylinder_chart(int columns, int rows, double turn)
   return chart;
 }
 
-// A developable chart is flattened without stretch, to rounding (LSCM's map of it is an
-// isometry, which the stretch-minimizing iteration from a circle only nears: 1e-8 to 1e-6 here);
+// A developable chart is flattened without stretch, to rounding (its conformal maps are
+// isometries, which the stretch-minimizing iteration from a circle only nears: 1e-8 to 1e-6 here);
 // a tube, which is no disk, still gets a flip-free map, from the other start.
 void chart_starts()
 {
@@ -719,6 +719,61 @@ void chart_starts()
   SMP::internal::Chart_map tube = cylinder_chart(24, 6, 1.);
   SMP::internal::flatten_chart(tube, settings);
   SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
+}
+
+// The boundary-first map keeps the border's lengths and flattens the inside: a developable
+// strip and a plane of uneven triangles come out isometric to rounding, a saddle without a
+// flipped triangle and with its border sides within a few percent of their lengths; a tube,
+// with two border loops, is refused.
+void boundary_first_map_cases()
+{
+  namespace I = SMP::internal;
+  I::Flat_stretch measure;
+  std::vector<I::Vec2> uv;
+  const I::Chart_map strip = cylinder_chart(60, 3, 60 * 0.1 / (2. * 3.14159265358979323846));
+  SMP_CHECK(I::boundary_first_map(strip.flat.xyz, strip.flat.tri, uv), "boundary-first map of a strip: not solved");
+  const I::Flat_stretch_summary developed = measure.evaluate(strip.flat, uv);
+  SMP_CHECK(developed.flipped == 0 && std::abs(developed.l2 - 1.) < 1e-9 && std::abs(developed.linf - 1.) < 1e-9,
+            "boundary-first map of a strip: " << developed.flipped << " flipped, L2 " << developed.l2 << ", Linf " << developed.linf);
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  const int n = 12;
+  I::Flat_triangles plane, saddle;
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const double x = i + (i > 0 && i + 1 < n ? jitter(random) : 0.), y = j + (j > 0 && j + 1 < n ? jitter(random) : 0.);
+      const double sx = x * x / n;
+      plane.xyz.push_back({sx, y, 0.4 * sx - 0.2 * y});
+      saddle.xyz.push_back({sx, y, 0.05 * (sx * sx - y * y)});
+    }
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      plane.tri.push_back({a, b, d});
+      plane.tri.push_back({a, d, c});
+    }
+  saddle.tri = plane.tri;
+  SMP_CHECK(I::boundary_first_map(plane.xyz, plane.tri, uv), "boundary-first map of a plane: not solved");
+  const I::Flat_stretch_summary flat = measure.evaluate(plane, uv);
+  SMP_CHECK(flat.flipped == 0 && std::abs(flat.l2 - 1.) < 1e-9 && std::abs(flat.linf - 1.) < 1e-9,
+            "boundary-first map of a plane: " << flat.flipped << " flipped, L2 " << flat.l2 << ", Linf " << flat.linf);
+  SMP_CHECK(I::boundary_first_map(saddle.xyz, saddle.tri, uv), "boundary-first map of a saddle: not solved");
+  const I::Flat_stretch_summary curved = measure.evaluate(saddle, uv);
+  double lowest = HUGE_VAL, highest = 0.;
+  for(const I::Triangle& t : saddle.tri)
+    for(std::size_t k = 0; k < 3; ++k) {
+      const int i = t[k], j = t[(k + 1) % 3];
+      const bool border = (i / n == j / n && (i / n == 0 || i / n == n - 1)) || (i % n == j % n && (i % n == 0 || i % n == n - 1));
+      if(!border) continue;
+      const double r = std::hypot(uv[std::size_t(i)][0] - uv[std::size_t(j)][0], uv[std::size_t(i)][1] - uv[std::size_t(j)][1]) /
+                       I::norm3(I::sub3(saddle.xyz[std::size_t(i)], saddle.xyz[std::size_t(j)]));
+      lowest = (std::min)(lowest, r);
+      highest = (std::max)(highest, r);
+    }
+  SMP_CHECK(curved.flipped == 0 && curved.degenerate_uv == 0 && lowest > 0.97 && highest < 1.03,
+            "boundary-first map of a saddle: " << curved.flipped << " flipped, border sides scaled by " << lowest << " to " << highest);
+  const I::Chart_map tube = cylinder_chart(24, 6, 1.);
+  SMP_CHECK(!I::boundary_first_map(tube.flat.xyz, tube.flat.tri, uv), "boundary-first map of a tube: not refused");
 }
 
 // The conformal map (the Dirichlet energies of u and v less the uv area) checked against the
@@ -1384,6 +1439,7 @@ int main(int argc, char** argv)
   chart_mask_covers();
   chart_starts();
   conformal_map_minimum();
+  boundary_first_map_cases();
   interior_fold_repair();
   holes_without_seams();
   cone_slits();

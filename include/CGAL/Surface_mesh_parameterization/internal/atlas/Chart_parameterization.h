@@ -6,9 +6,9 @@
 
 // One chart of the atlas flattened: the chart's triangles made into a Surface_mesh (one vertex
 // per chart vertex), then Sander's stretch lowered with a free border (flip-free, the border
-// never crossing itself) from one of two starts: the conformal map (LSCM's, Conformal_map.h)
-// where it is a bijection (it is cheap, and often much closer to the least stretch), else this
-// package's stretch-minimizing iteration from a fixed circular border. A chart that closed
+// never crossing itself) from one of two starts: a conformal map (the boundary-first map, else
+// LSCM's: Conformal_map.h) where it is a bijection (it is cheap, and often much closer to the
+// least stretch), else this package's stretch-minimizing iteration from a fixed circular border. A chart that closed
 // around a hole is first flattened with the hole kept (the conformal map with the hole filled
 // by guard triangles), without the seam to it. A
 // chart of one triangle is laid out isometrically.
@@ -76,11 +76,13 @@ struct Chart_parameterization_settings
   // the last steps costs a factorization for a gain far below the bound. A map above the bound
   // is polished on (whether it ends within the bound, and where it is cut if not, depend on it).
   double polish_tolerance = 1e-4;
-  double max_stretch = HUGE_VAL;         // a map from LSCM at most this stretched is kept as it is
+  double max_stretch = HUGE_VAL;         // a conformal map at most this stretched is kept as it is
   unsigned int threads = 1;              // of the polish of one chart (the map does not depend on it)
   // charts of this many vertices or more are polished by split Newton steps, within the bound
   // or not (below, by the coupled steps where the start is above the bound)
   std::size_t split_newton_vertices = 10000;
+  // a boundary-first map above this L2 stretch gives way to LSCM's (see flatten_from_conformal())
+  double boundary_first_limit = 2.;
 };
 
 // The charts from `begin` to `end` by their number of triangles, the largest first (in their
@@ -196,9 +198,10 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
   return uv;
 }
 
-// LSCM's map of the chart polished by free-border Newton steps, if the chart is a disk and
-// LSCM's map of it is a bijection (every face of positive area, the border loop simple: then
-// no two triangles overlap, and the polish keeps it so); false otherwise. The faces of `sm` are
+// A conformal map of the chart (the boundary-first map, else LSCM's: see below) polished by
+// free-border Newton steps, if the chart is a disk and that map is a bijection (every face of
+// positive area, the border loop simple: then no two triangles overlap, and the polish keeps it
+// so); false otherwise. The faces of `sm` are
 // those of `flat`, then the `guard` faces (holes filled): they keep their place in the map
 // without counting in its stretch.
 inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Flat_triangles& flat,
@@ -217,35 +220,46 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
     return false;
   std::vector<Triangle> all = flat.tri;
   all.insert(all.end(), guard.begin(), guard.end());
-  if(!conformal_map(flat.xyz, all, uv))
-    return false;
   std::vector<int> border;
   for(Chart_halfedge h : halfedges_around_face(bhd, sm))
     border.push_back(int(target(h, sm)));
-  // a map that is a bijection but for a few folded triangles inside is mended where they are
-  repair_interior_folds(sm, flat.xyz, all, uv);
-  // the polisher refuses a start with a flipped or flat face, or a border that is not simple
-  Sander_polish_settings ps;
-  // A map within the bound is only refined: the split Newton steps (u and v apart, an eighth of
-  // the flops to factor) do that about as well as the coupled ones. A map above it may have far
-  // to go to come under the bound, which the coupled steps cover in fewer steps, unless the
-  // chart is large: the coupled factorizations then cost more than the extra split steps.
-  const bool split = flat.xyz.size() >= settings.split_newton_vertices ||
-                     Flat_stretch().evaluate(flat, uv).l2 <= settings.max_stretch;
-  ps.direction = split ? Sander_polish_direction::SPLIT_NEWTON : Sander_polish_direction::NEWTON;
-  ps.free_border = true;
-  ps.threads = settings.threads;
-  ps.supernodal_blas = false; // charts are flattened on several threads at once
-  ps.max_iterations = settings.polish_iterations;
-  double energy = HUGE_VAL;
-  const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
-    const double before = energy;
-    energy = step.energy;
-    return polish_goes_on(before, step.energy, step.l2_stretch, settings);
-  };
-  Sander_energy_polisher<> polisher;
-  return polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
-         Sander_polish_status::OK;
+  // The boundary-first map is taken first: it is the cheaper to solve (one scalar system), and
+  // the conformal map of least area distortion. Where it is no bijection, or far above the
+  // bound, LSCM's map is taken as before: far above the bound, the boundary-first map is often
+  // a bijection where LSCM's is not, and polishing it at length leaves it above the bound all
+  // the same, where LSCM's refusal hands the chart to the stretch-minimizing start at once.
+  for(const bool boundary_first : {true, false}) {
+    if(!(boundary_first ? boundary_first_map(flat.xyz, all, uv) : conformal_map(flat.xyz, all, uv)))
+      continue;
+    // a map that is a bijection but for a few folded triangles inside is mended where they are
+    repair_interior_folds(sm, flat.xyz, all, uv);
+    const double l2 = Flat_stretch().evaluate(flat, uv).l2;
+    if(boundary_first && !(l2 <= settings.boundary_first_limit))
+      continue;
+    // the polisher refuses a start with a flipped or flat face, or a border that is not simple
+    Sander_polish_settings ps;
+    // A map within the bound is only refined: the split Newton steps (u and v apart, an eighth
+    // of the flops to factor) do that about as well as the coupled ones. A map above it may have
+    // far to go to come under the bound, which the coupled steps cover in fewer steps, unless
+    // the chart is large: the coupled factorizations then cost more than the extra split steps.
+    const bool split = flat.xyz.size() >= settings.split_newton_vertices || l2 <= settings.max_stretch;
+    ps.direction = split ? Sander_polish_direction::SPLIT_NEWTON : Sander_polish_direction::NEWTON;
+    ps.free_border = true;
+    ps.threads = settings.threads;
+    ps.supernodal_blas = false; // charts are flattened on several threads at once
+    ps.max_iterations = settings.polish_iterations;
+    double energy = HUGE_VAL;
+    const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
+      const double before = energy;
+      energy = step.energy;
+      return polish_goes_on(before, step.energy, step.l2_stretch, settings);
+    };
+    Sander_energy_polisher<> polisher;
+    if(polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
+       Sander_polish_status::OK)
+      return true;
+  }
+  return false;
 }
 
 // The stretch-minimizing parameterizer (LOWEST_STRETCH from a circular border, then the polish
@@ -329,12 +343,12 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
   return true;
 }
 
-// `sm`, the faces of `flat` in their order, flattened from LSCM's map of it with every hole but
+// `sm`, the faces of `flat` in their order, flattened from a conformal map of it with every hole but
 // the longest border filled (a planar loop's constrained Delaunay triangles, else CGAL's
 // exhaustive search, else ear clipping: see triangulate_loop.h), the fillers kept as guards
 // through the polish (the holes stay open and nothing enters them): `uv` per vertex of `flat`.
 // False if `sm` is not a surface of genus 0 with holes (`holes` false, `sm` unchanged), or a
-// hole cannot be filled, or LSCM's map is no bijection.
+// hole cannot be filled, or neither conformal map is a bijection.
 inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Chart_parameterization_settings& settings,
                           std::vector<Vec2>& uv, bool& holes)
 {
@@ -397,7 +411,7 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
 
 // The chart with its slits closed, so that it has holes instead, flattened by flatten_holed(),
 // so that a chart grown around a hole needs no seam to it. False if the chart has no slit, or
-// the closed chart is not a surface of genus 0 with holes, or LSCM's map of it is no bijection;
+// the closed chart is not a surface of genus 0 with holes, or no conformal map of it is a bijection;
 // `holes` tells whether it is one (a slit closed without a hole is the cut of a cone, which the
 // other starts open).
 inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes)
@@ -453,7 +467,7 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
 }
 
 // Flattens the chart, whose vertices are made (`make_chart_vertices()`): the first map that
-// ends at most `max_stretch` of, in turn, the chart with its slits closed, LSCM's map of a chart
+// ends at most `max_stretch` of, in turn, the chart with its slits closed, a conformal map of a chart
 // without slits, and, if `minimize`, this package's; else the lowest of them. Without
 // `minimize` (the cheap starts only), a chart with holes of its own and no slit (a union of
 // charts) starts from flatten_holed(), as it has no other. On failure `chart.ok` is false and

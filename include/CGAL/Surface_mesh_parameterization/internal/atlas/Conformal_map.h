@@ -4,8 +4,9 @@
 #ifndef CGAL_SMP_INTERNAL_ATLAS_CONFORMAL_MAP_H
 #define CGAL_SMP_INTERNAL_ATLAS_CONFORMAL_MAP_H
 
-// The free-border conformal map of a chart (LSCM, Lévy et al. 2002), as the minimum of the
-// conformal energy written as the Dirichlet energy of u and of v less the area of the map
+// Two free-border conformal maps of a chart. The boundary-first map (Sawhney and Crane 2017),
+// whose border keeps its lengths, solves one scalar system. LSCM's (Lévy et al. 2002), as the
+// minimum of the conformal energy written as the Dirichlet energy of u and of v less the area of the map
 // (Desbrun, Meyer and Alliez 2002, who show the two are one energy): u and v are then coupled
 // on the border only, where CGAL's LSCM_parameterizer_3, with two residuals per triangle,
 // couples them at every vertex; its factorization takes a fraction of the flops. (CGAL's
@@ -24,6 +25,7 @@
 #include <cmath>
 #include <cstddef>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -184,6 +186,140 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
     if(!std::isfinite(uv[v][0]) || !std::isfinite(uv[v][1]))
       return false;
   }
+  return true;
+}
+
+// The flat map of a disk whose border keeps its lengths: Boundary First Flattening (Sawhney and
+// Crane 2017) with zero scale factors on the border, the conformal map of least area
+// distortion. The scale factors u inside flatten the interior (A u = -K there, A the cotangent
+// Laplacian weighed as in conformal_map(), K the angle defects); the border then turns, at each
+// vertex, by its geodesic curvature plus (A u) there, its sides are lengthened or shortened as
+// little as closes it, and the inside is the harmonic extension of that border. One scalar
+// factorization for the three solves, where LSCM factors a system of twice the rows.
+// False if the triangles have more than one border loop or the system cannot be solved.
+inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<Triangle>& triangles, std::vector<Vec2>& uv)
+{
+  const std::size_t n = xyz.size();
+  // the border: the sides without a side the other way
+  std::vector<std::pair<int, int> > sides;
+  sides.reserve(3 * triangles.size());
+  for(const Triangle& t : triangles)
+    for(std::size_t k = 0; k < 3; ++k)
+      sides.emplace_back(t[k], t[(k + 1) % 3]);
+  std::vector<std::pair<int, int> > sorted = sides;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<int> next(n, -1);
+  std::size_t border_sides = 0;
+  for(const auto& e : sides)
+    if(!std::binary_search(sorted.begin(), sorted.end(), std::make_pair(e.second, e.first))) {
+      if(next[std::size_t(e.first)] >= 0)
+        return false;
+      next[std::size_t(e.first)] = e.second;
+      ++border_sides;
+    }
+  std::vector<int> loop;
+  for(std::size_t v = 0; v < n && loop.empty(); ++v)
+    if(next[v] >= 0)
+      for(int b = int(v); loop.size() <= border_sides; b = next[std::size_t(b)]) {
+        if(b < 0) return false;
+        if(!loop.empty() && b == int(v)) break;
+        loop.push_back(b);
+      }
+  if(loop.size() < 3 || loop.size() != border_sides)
+    return false;
+  std::vector<int> row(n, -1);
+  int rows = 0;
+  for(std::size_t v = 0; v < n; ++v)
+    if(next[v] < 0)
+      row[v] = rows++;
+  // angle sums, and the Laplacian: its interior rows (lower triangle), and its sides to the border
+  std::vector<double> angle(n, 0.);
+  std::vector<Eigen::Triplet<double> > entries;
+  entries.reserve(9 * triangles.size());
+  struct Side_weight { int from, to; double c; };
+  std::vector<Side_weight> to_border;
+  for(const Triangle& t : triangles) {
+    const double w = conformal_weight(xyz[std::size_t(t[0])], xyz[std::size_t(t[1])], xyz[std::size_t(t[2])]);
+    for(std::size_t k = 0; k < 3; ++k) {
+      const int i = t[(k + 1) % 3], j = t[(k + 2) % 3];
+      const Vec3& o = xyz[std::size_t(t[k])];
+      const Vec3 a = sub3(xyz[std::size_t(i)], o), b = sub3(xyz[std::size_t(j)], o);
+      const double cross = norm3(cross3(a, b)), dot = dot3(a, b);
+      angle[std::size_t(t[k])] += std::atan2(cross, dot);
+      if(w == 0.)
+        continue;
+      const double c = 0.5 * w * dot / cross;
+      const int ri = row[std::size_t(i)], rj = row[std::size_t(j)];
+      if(ri >= 0) entries.emplace_back(ri, ri, c);
+      if(rj >= 0) entries.emplace_back(rj, rj, c);
+      if(ri >= 0 && rj >= 0) entries.emplace_back((std::max)(ri, rj), (std::min)(ri, rj), -c);
+      else if(ri >= 0) to_border.push_back({i, j, c});
+      else if(rj >= 0) to_border.push_back({j, i, c});
+    }
+  }
+  const double pi = 3.14159265358979323846;
+  Eigen::VectorXd scale = Eigen::VectorXd::Zero(rows);
+  Sander_vertex_solver solver(true);
+  solver.set_supernodal_rows(Sander_vertex_solver::default_supernodal_rows, false);
+  if(rows > 0) {
+    Sander_vertex_solver::Matrix lower(rows, rows);
+    lower.setFromTriplets(entries.begin(), entries.end());
+    solver.compute(lower);
+    if(solver.info() != Eigen::Success)
+      return false;
+    Eigen::VectorXd defect(rows);
+    for(std::size_t v = 0; v < n; ++v)
+      if(row[v] >= 0)
+        defect[row[v]] = -(2. * pi - angle[v]);
+    scale = solver.solve(defect);
+  }
+  // the turning of the border at each vertex: its geodesic curvature plus (A u) there
+  std::vector<double> turn(n, 0.);
+  for(int b : loop)
+    turn[std::size_t(b)] = pi - angle[std::size_t(b)];
+  for(const Side_weight& s : to_border)
+    turn[std::size_t(s.to)] -= s.c * scale[row[std::size_t(s.from)]];
+  // the border's sides, in turn, then their lengths changed as little as closes it (least
+  // squares weighed by 1 / length)
+  const std::size_t m = loop.size();
+  std::vector<Vec2> tangent(m);
+  std::vector<double> length(m);
+  double phi = 0.;
+  double M[2][2] = {{0., 0.}, {0., 0.}}, gap[2] = {0., 0.};
+  for(std::size_t i = 0; i < m; ++i) {
+    if(i > 0) phi += turn[std::size_t(loop[i])];
+    tangent[i] = {std::cos(phi), std::sin(phi)};
+    length[i] = norm3(sub3(xyz[std::size_t(loop[(i + 1) % m])], xyz[std::size_t(loop[i])]));
+    for(int r = 0; r < 2; ++r) {
+      gap[r] += length[i] * tangent[i][std::size_t(r)];
+      for(int c = 0; c < 2; ++c)
+        M[r][c] += length[i] * tangent[i][std::size_t(r)] * tangent[i][std::size_t(c)];
+    }
+  }
+  const double det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+  if(!(std::abs(det) > 0.))
+    return false;
+  const Vec2 lambda = {(M[1][1] * gap[0] - M[0][1] * gap[1]) / det, (M[0][0] * gap[1] - M[1][0] * gap[0]) / det};
+  uv.assign(n, Vec2{0., 0.});
+  Vec2 at = {0., 0.};
+  for(std::size_t i = 0; i < m; ++i) {
+    uv[std::size_t(loop[i])] = at;
+    const double l = length[i] * (1. - (tangent[i][0] * lambda[0] + tangent[i][1] * lambda[1]));
+    at = {at[0] + l * tangent[i][0], at[1] + l * tangent[i][1]};
+  }
+  if(rows > 0) {
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(rows, 2);
+    for(const Side_weight& s : to_border)
+      for(int d = 0; d < 2; ++d)
+        rhs(row[std::size_t(s.from)], d) += s.c * uv[std::size_t(s.to)][std::size_t(d)];
+    const Eigen::MatrixXd inside = solver.solve(rhs);
+    for(std::size_t v = 0; v < n; ++v)
+      if(row[v] >= 0)
+        uv[v] = {inside(row[v], 0), inside(row[v], 1)};
+  }
+  for(const Vec2& q : uv)
+    if(!std::isfinite(q[0]) || !std::isfinite(q[1]))
+      return false;
   return true;
 }
 
