@@ -721,6 +721,27 @@ void chart_starts()
   SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
 }
 
+// An n x n grid of jittered squares, each cut in two, squeezed on one side (triangles of uneven
+// sizes), on a plane and on a saddle.
+void jittered_grids(int n, std::mt19937& random, SMP::internal::Flat_triangles& plane, SMP::internal::Flat_triangles& saddle)
+{
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const double x = i + (i > 0 && i + 1 < n ? jitter(random) : 0.), y = j + (j > 0 && j + 1 < n ? jitter(random) : 0.);
+      const double sx = x * x / n;
+      plane.xyz.push_back({sx, y, 0.4 * sx - 0.2 * y});
+      saddle.xyz.push_back({sx, y, 0.05 * (sx * sx - y * y)});
+    }
+  for(int j = 0; j + 1 < n; ++j)
+    for(int i = 0; i + 1 < n; ++i) {
+      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
+      plane.tri.push_back({a, b, d});
+      plane.tri.push_back({a, d, c});
+    }
+  saddle.tri = plane.tri;
+}
+
 // The boundary-first map keeps the border's lengths and flattens the inside: a developable
 // strip and a plane of uneven triangles come out isometric to rounding, a saddle without a
 // flipped triangle and with its border sides within a few percent of their lengths; a tube,
@@ -736,23 +757,9 @@ void boundary_first_map_cases()
   SMP_CHECK(developed.flipped == 0 && std::abs(developed.l2 - 1.) < 1e-9 && std::abs(developed.linf - 1.) < 1e-9,
             "boundary-first map of a strip: " << developed.flipped << " flipped, L2 " << developed.l2 << ", Linf " << developed.linf);
   std::mt19937 random(11);
-  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
   const int n = 12;
   I::Flat_triangles plane, saddle;
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const double x = i + (i > 0 && i + 1 < n ? jitter(random) : 0.), y = j + (j > 0 && j + 1 < n ? jitter(random) : 0.);
-      const double sx = x * x / n;
-      plane.xyz.push_back({sx, y, 0.4 * sx - 0.2 * y});
-      saddle.xyz.push_back({sx, y, 0.05 * (sx * sx - y * y)});
-    }
-  for(int j = 0; j + 1 < n; ++j)
-    for(int i = 0; i + 1 < n; ++i) {
-      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      plane.tri.push_back({a, b, d});
-      plane.tri.push_back({a, d, c});
-    }
-  saddle.tri = plane.tri;
+  jittered_grids(n, random, plane, saddle);
   SMP_CHECK(I::boundary_first_map(plane.xyz, plane.tri, uv), "boundary-first map of a plane: not solved");
   const I::Flat_stretch_summary flat = measure.evaluate(plane, uv);
   SMP_CHECK(flat.flipped == 0 && std::abs(flat.l2 - 1.) < 1e-9 && std::abs(flat.linf - 1.) < 1e-9,
@@ -788,24 +795,11 @@ void conformal_map_minimum()
   std::uniform_real_distribution<double> jitter(-0.3, 0.3);
   const int n = 14;
   I::Flat_triangles plane, saddle;
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const double x = i + (i > 0 && i + 1 < n ? jitter(random) : 0.), y = j + (j > 0 && j + 1 < n ? jitter(random) : 0.);
-      const double sx = x * x / n; // squeezed on one side: triangles of uneven sizes
-      plane.xyz.push_back({sx, y, 0.4 * sx - 0.2 * y});
-      saddle.xyz.push_back({sx, y, 0.05 * (sx * sx - y * y)});
-    }
+  jittered_grids(n, random, plane, saddle);
   // a vertex moved next to its neighbour along their edge: two needles, weighed down
   const I::Vec3 a = saddle.xyz[std::size_t(5 * n + 5)], b = saddle.xyz[std::size_t(5 * n + 6)];
   for(std::size_t k = 0; k < 3; ++k)
     saddle.xyz[std::size_t(5 * n + 5)][k] = b[k] + 1e-5 * (a[k] - b[k]);
-  for(int j = 0; j + 1 < n; ++j)
-    for(int i = 0; i + 1 < n; ++i) {
-      const int a = j * n + i, b = a + 1, c = a + n, d = c + 1;
-      plane.tri.push_back({a, b, d});
-      plane.tri.push_back({a, d, c});
-    }
-  saddle.tri = plane.tri;
   auto energy = [](const I::Flat_triangles& m, const std::vector<I::Vec2>& uv) {
     double e = 0.;
     for(const I::Triangle& t : m.tri) {
