@@ -223,13 +223,14 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   std::vector<int> border;
   for(Chart_halfedge h : halfedges_around_face(bhd, sm))
     border.push_back(int(target(h, sm)));
+  const std::vector<int> inside_left(border.rbegin(), border.rend()); // the triangles' way round
   // The boundary-first map is taken first: it is the cheaper to solve (one scalar system), and
   // the conformal map of least area distortion. Where it is no bijection, or far above the
   // bound, LSCM's map is taken as before: far above the bound, the boundary-first map is often
   // a bijection where LSCM's is not, and polishing it at length leaves it above the bound all
   // the same, where LSCM's refusal hands the chart to the stretch-minimizing start at once.
   for(const bool boundary_first : {true, false}) {
-    if(!(boundary_first ? boundary_first_map(flat.xyz, all, uv) : conformal_map(flat.xyz, all, uv)))
+    if(!(boundary_first ? boundary_first_map(flat.xyz, all, inside_left, uv) : conformal_map(flat.xyz, all, uv)))
       continue;
     // a map that is a bijection but for a few folded triangles inside is mended where they are
     repair_interior_folds(sm, flat.xyz, all, uv);

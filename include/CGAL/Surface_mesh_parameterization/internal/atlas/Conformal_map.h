@@ -25,7 +25,6 @@
 #include <cmath>
 #include <cstddef>
 #include <tuple>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -196,41 +195,24 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
 // vertex, by its geodesic curvature plus (A u) there, its sides are lengthened or shortened as
 // little as closes it, and the inside is the harmonic extension of that border. One scalar
 // factorization for the three solves, where LSCM factors a system of twice the rows.
-// False if the triangles have more than one border loop or the system cannot be solved.
-inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<Triangle>& triangles, std::vector<Vec2>& uv)
+// `loop`: the border of the disk that the triangles make (its only border), each side from a
+// vertex to the next a side of a triangle (the inside on its left). False if a vertex is twice
+// on it or the system cannot be solved.
+inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<Triangle>& triangles,
+                               const std::vector<int>& loop, std::vector<Vec2>& uv)
 {
   const std::size_t n = xyz.size();
-  // the border: the sides without a side the other way
-  std::vector<std::pair<int, int> > sides;
-  sides.reserve(3 * triangles.size());
-  for(const Triangle& t : triangles)
-    for(std::size_t k = 0; k < 3; ++k)
-      sides.emplace_back(t[k], t[(k + 1) % 3]);
-  std::vector<std::pair<int, int> > sorted = sides;
-  std::sort(sorted.begin(), sorted.end());
-  std::vector<int> next(n, -1);
-  std::size_t border_sides = 0;
-  for(const auto& e : sides)
-    if(!std::binary_search(sorted.begin(), sorted.end(), std::make_pair(e.second, e.first))) {
-      if(next[std::size_t(e.first)] >= 0)
-        return false;
-      next[std::size_t(e.first)] = e.second;
-      ++border_sides;
-    }
-  std::vector<int> loop;
-  for(std::size_t v = 0; v < n && loop.empty(); ++v)
-    if(next[v] >= 0)
-      for(int b = int(v); loop.size() <= border_sides; b = next[std::size_t(b)]) {
-        if(b < 0) return false;
-        if(!loop.empty() && b == int(v)) break;
-        loop.push_back(b);
-      }
-  if(loop.size() < 3 || loop.size() != border_sides)
+  if(loop.size() < 3)
     return false;
-  std::vector<int> row(n, -1);
+  std::vector<int> row(n, 0); // -1 on the border, else the row of the vertex
+  for(int b : loop) {
+    if(row[std::size_t(b)] < 0)
+      return false;
+    row[std::size_t(b)] = -1;
+  }
   int rows = 0;
   for(std::size_t v = 0; v < n; ++v)
-    if(next[v] < 0)
+    if(row[v] == 0)
       row[v] = rows++;
   // angle sums, and the Laplacian: its interior rows (lower triangle), and its sides to the border
   std::vector<double> angle(n, 0.);
