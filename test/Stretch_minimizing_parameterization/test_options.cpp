@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <string>
 #include <vector>
 
@@ -433,7 +434,9 @@ int main()
   check_chains("mushroom.off");
 
   // a time budget alone asks for the polish, which stops on it or converges; what it did in
-  // that time depends on the machine, so only what holds on any machine is checked
+  // that time depends on the machine, so only what holds on any machine is checked (on a slow
+  // one the budget can run out before the first step: the map written is then U^opt, measured
+  // here again, equal up to rounding)
   {
     Mesh m;
     SMP_CHECK(CGAL::IO::read_polygon_mesh(smp_test::data_file("mannequin-devil.off"), m), "cannot read");
@@ -444,9 +447,9 @@ int main()
     SMP_CHECK(r.status == SMP::OK && polish.ran() &&
               (polish.stop == SMP::Polish_stop::TIME_BUDGET || polish.stop == SMP::Polish_stop::CONVERGED) &&
               (polish.stop != SMP::Polish_stop::TIME_BUDGET || polish.seconds >= budget) &&
-              r.written_l2 <= r.report.kept().l2_stretch && (!steps || r.written_l2 < r.report.kept().l2_stretch),
+              r.written_l2 <= r.report.kept().l2_stretch * (1. + 1e-9) && (!steps || r.written_l2 < r.report.kept().l2_stretch),
               "time budget alone: " << polish.descent_iterations << " + " << polish.iterations << " steps in "
-              << polish.seconds << " s, L2 " << r.written_l2);
+              << polish.seconds << " s, L2 " << std::setprecision(17) << r.written_l2 << ", U^opt " << r.report.kept().l2_stretch);
   }
   return smp_test::summary();
 }
