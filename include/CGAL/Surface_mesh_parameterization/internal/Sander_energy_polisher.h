@@ -125,6 +125,11 @@ class Sander_energy_polisher
 public:
   // Relative eigenvalue floor of the per-face Hessians.
   static constexpr double eigenvalue_floor = 1e-8;
+  // Fewest moving vertices for which the two split systems are factored on two threads: below,
+  // starting a thread at every step costs more than it saves (on a mesh of a few vertices, many
+  // times the rest of the step); the value is near the crossover measured on CGAL's sample disks
+  // (scripts/check-other-meshes.sh).
+  static constexpr std::size_t split_parallel_rows = 1000;
 
   // Polishes `uv` (one entry per vertex of `m.xyz`) in place.
   // - energy faces: `m.tri`; those degenerate in 3D only have to stay positively oriented;
@@ -491,7 +496,8 @@ private:
     if(analyse && m_order.empty())
       own = minimum_degree_order(m_Hs[0]);
     const std::vector<int>& order = own.empty() ? m_order : own;
-    parallel_for_each(2, (std::min)(threads, 2u), [&](std::size_t c) {
+    const unsigned int split_threads = m_dofs >= split_parallel_rows ? (std::min)(threads, 2u) : 1u;
+    parallel_for_each(2, split_threads, [&](std::size_t c) {
       VertexSolver& solver = m_split_solver[c];
       if(analyse)
         solver.analyzePattern(m_Hs[c], order);
