@@ -127,8 +127,8 @@ public:
   static constexpr double eigenvalue_floor = 1e-8;
   // Fewest moving vertices for which the two split systems are factored on two threads: below,
   // starting a thread at every step costs more than it saves (on a mesh of a few vertices, many
-  // times the rest of the step); the value is near the crossover measured on CGAL's sample disks
-  // (scripts/check-other-meshes.sh).
+  // times the rest of the step); the value is near the crossover found by timing both thread
+  // counts on CGAL's sample disks with the program of scripts/check-other-meshes.sh.
   static constexpr std::size_t split_parallel_rows = 1000;
 
   // Polishes `uv` (one entry per vertex of `m.xyz`) in place.
