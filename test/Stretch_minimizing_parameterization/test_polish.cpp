@@ -176,6 +176,49 @@ void test_controls(const Start& s)
   SMP_CHECK(max_displacement(uv, seen) == 0., "the result is not the visitor's last map");
 }
 
+// The rule on the energy over a window of steps: the steps end at the first step after which
+// the last `window` of them (all of them, while there are fewer) lowered the energy by less
+// than `window` times the tolerance, relatively, and not before. The steps are those of a
+// window of one, and a rule that one step fails holds over any window: a wider window takes
+// the same steps, and more of them.
+void test_tolerance_window(const Start& s)
+{
+  std::vector<double> previous;
+  for(const unsigned int window : {1u, 3u}) {
+    SI::Sander_polish_settings st;
+    st.direction = SI::Sander_polish_direction::SPLIT_NEWTON;
+    st.tolerance = 2e-3;
+    st.tolerance_window = window;
+    st.max_iterations = 200;
+    std::vector<double> energies;
+    std::vector<Vec2> uv = s.uv;
+    SI::Sander_energy_polisher<> polisher;
+    const SI::Sander_polish_result r = polisher.polish(s.m, s.guard, s.fixed, s.border, uv, st,
+                                                       [&](const SI::Sander_polish_step& step) {
+                                                         energies.push_back(step.energy);
+                                                         return true;
+                                                       });
+    energies.insert(energies.begin(), r.energy_before);
+    SMP_CHECK(r.status == SI::Sander_polish_status::OK && r.stop == SI::Sander_polish_stop::CONVERGED &&
+              r.iterations > 0 && r.iterations + 1 == energies.size(),
+              "window " << window << ": " << stop_name(r.stop) << " after " << r.iterations << " steps");
+    for(std::size_t j = 1; j < energies.size(); ++j) {
+      const std::size_t k = (std::min)(std::size_t(window), j);
+      const bool below = energies[j - k] - energies[j] <= double(k) * st.tolerance * energies[j];
+      SMP_CHECK(below == (j + 1 == energies.size()),
+                "window " << window << ": step " << j << " of " << r.iterations << " is " << (below ? "" : "not ")
+                          << "below the tolerance");
+    }
+    if(!previous.empty()) {
+      SMP_CHECK(energies.size() >= previous.size() && std::equal(previous.begin(), previous.end(), energies.begin()),
+                "window " << window << ": " << r.iterations << " steps, not those of a window of one ("
+                          << previous.size() - 1 << ") and more");
+    }
+    std::cout << "tolerance window " << window << ": " << r.iterations << " split steps" << std::endl;
+    previous = energies;
+  }
+}
+
 // The descent steps of either kind (along the proxy, split Newton) from U^opt, border fixed and
 // free: the energy never increases,
 // no face flips at any step, fixed vertices stay, the free border stays simple, and it gains.
@@ -216,7 +259,10 @@ void test_mesh(const std::string& name, double reference, double free_goal, bool
 {
   Start s;
   if(!load_start(name, s)) return;
-  if(controls) test_controls(s);
+  if(controls) {
+    test_controls(s);
+    test_tolerance_window(s);
+  }
   test_descent(name, s);
   SI::Flat_stretch fs;
 

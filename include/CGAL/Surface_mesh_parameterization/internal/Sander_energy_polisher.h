@@ -72,6 +72,10 @@ struct Sander_polish_settings
   double time_budget = 0.;    // seconds, checked before each step; <= 0: none
   bool free_border = false;   // let the outer border move (the vertices of `border`)
   double tolerance = 1e-6;    // converged when a step lowers the energy by less than this, relatively
+  // converged when the last `tolerance_window` steps together lower the energy by less than
+  // that many times the tolerance (fewer steps at the start): a step cut short by a fold may
+  // gain little where the next ones gain again, which one step alone cannot tell
+  unsigned int tolerance_window = 1;
   unsigned int threads = 1;   // of the stretch measured after each step and of the two systems of
                               // SPLIT_NEWTON (the result does not depend on it)
   // the order in which the proxy and the split systems eliminate the vertices (rank per vertex,
@@ -190,6 +194,7 @@ public:
       build_newton_pattern();
     double first_trial = 1.; // of the line search; with the proxy, the last step taken
     bool factored = false;
+    std::vector<double> energies(1, r.energy_before); // as reported, after each step (window > 1)
     for(;;) {
       if(r.iterations >= settings.max_iterations) { r.stop = Sander_polish_stop::ITERATION_CAP; break; }
       if(settings.time_budget > 0. && seconds() >= settings.time_budget) {
@@ -268,7 +273,7 @@ public:
         s.uv = &m_current;
         go_on = visitor(s);
       }
-      if(decrease <= settings.tolerance * E) { r.stop = Sander_polish_stop::CONVERGED; break; }
+      if(converged(decrease, E, settings, energies)) { r.stop = Sander_polish_stop::CONVERGED; break; }
       if(!go_on) { r.stop = Sander_polish_stop::VISITOR; break; }
     }
 
@@ -285,6 +290,20 @@ public:
   const VertexSolver& newton_solver() const { return m_solver; }
 
 private:
+  // Whether a step that lowered the energy by `decrease` to `E` ends the steps: with a window of
+  // one step, by that decrease; with a wider one, by the energy as reported (E, or E * A with
+  // the area term, whose E changes with mu from step to step) over the last steps, appended to
+  // `energies`.
+  bool converged(double decrease, double E, const Sander_polish_settings& settings, std::vector<double>& energies) const
+  {
+    if(settings.tolerance_window <= 1)
+      return decrease <= settings.tolerance * E;
+    energies.push_back(m_area_term ? product_of(m_x) : E);
+    const std::size_t k = (std::min)(std::size_t(settings.tolerance_window), energies.size() - 1);
+    const double now = energies.back();
+    return energies[energies.size() - 1 - k] - now <= double(k) * settings.tolerance * now;
+  }
+
   struct Energy_face
   {
     Triangle v;

@@ -171,14 +171,18 @@ inline void fit_in_unit_square(std::vector<Vec2>& uv)
     p = {(p[0] - lo[0]) / extent, (p[1] - lo[1]) / extent};
 }
 
-// The descent steps of the polish stage with a fixed border: split Newton steps while a step
-// lowers the energy by at least `split_descent_tolerance` relatively: past that each step gains
-// little more, where the Newton steps (polish_iterations) go on to the optimum. (Steps along the
+// The descent steps of the polish stage with a fixed border: split Newton steps while the last
+// `split_descent_window` steps lower the energy by at least `split_descent_tolerance` each on
+// average, relatively: past that each step gains little more, where the Newton steps
+// (polish_iterations) go on to the optimum. On large meshes most split steps are cut short by
+// a fold, and one of them may gain little where the next ones gain again: a rule on one step
+// stopped the descent there, far above where it goes on to. (Steps along the
 // proxy first, while they gained 1%, ended higher on most meshes measured: from U^opt, the
 // proxy's first step is cut short by a fold.) With a free border, steps along the proxy only, to
 // the polisher's tolerance: on the charts of the atlas (a circle's U^opt, then a free border) the
 // split steps cost more flattening time than the seams they saved.
 constexpr double split_descent_tolerance = 2e-3;
+constexpr unsigned int split_descent_window = 3;
 
 // Lowers the stretch of `uv` (U^opt) further, flip-free: first by descent steps (projected Newton
 // steps on u and v apart with a fixed border, along the proxy with a free one: cheap), then by
@@ -228,8 +232,10 @@ inline void polish_stage(const Disk_component_base& dc, std::size_t real_vertice
     ps.direction = direction;
     if(direction == (settings.free_border ? Sander_polish_direction::SPLIT_NEWTON : Sander_polish_direction::DIRICHLET_PROXY))
       continue;
-    if(direction == Sander_polish_direction::SPLIT_NEWTON)
+    if(direction == Sander_polish_direction::SPLIT_NEWTON) {
       ps.tolerance = split_descent_tolerance;
+      ps.tolerance_window = split_descent_window;
+    }
     ps.free_border = settings.free_border;
     ps.threads = thread_count(settings.threads);
     ps.vertex_rank = &vertex_rank;
