@@ -59,7 +59,7 @@ enum class Stretch_minimizing_preset
 
 /// \ingroup PkgStretchMinimizingParameterizationRef
 /// The cap on the descent steps of `Stretch_minimizing_preset::LOWEST_STRETCH`
-/// (see `descent_iterations`), which also stop when a step gains little: past that point the
+/// (see `descent_iterations`), which also stop when the last steps gain little: past that point the
 /// Newton steps of the polish (`polish_iterations`) go on to the optimum.
 constexpr unsigned int lowest_stretch_descent_iterations = 30;
 

@@ -230,7 +230,8 @@ public:
   ///                           by construction of the line search, at most this many: projected Newton steps
   ///                           without the terms of the Hessian that couple u and v (two systems the size of
   ///                           the mesh, factored side by side: about a quarter of the flops of a Newton step)
-  ///                           while a step lowers the energy by 0.2% or more; with `free_border(true)`, steps
+  ///                           while the last three steps lower the energy by 0.2% or more a step on average
+  ///                           (one step cut short by a fold does not end them); with `free_border(true)`, steps
   ///                           along its gradient preconditioned by the cotangent Laplacian of the mesh
   ///                           (factored once: a step costs far less than a reweighting step), until they
   ///                           converge (0: none)}
