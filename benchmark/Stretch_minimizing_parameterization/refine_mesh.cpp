@@ -9,6 +9,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <cstdlib>
@@ -23,7 +24,7 @@ int main(int argc, char** argv)
     return 2;
   }
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(argv[1], mesh) || is_empty(mesh)) {
+  if(!CGAL::IO::read_polygon_mesh(argv[1], mesh) || is_empty(mesh) || !CGAL::is_triangle_mesh(mesh)) {
     std::cerr << "refine_mesh: cannot read a triangle mesh from " << argv[1] << std::endl;
     return 1;
   }

@@ -179,8 +179,8 @@ void test_controls(const Start& s)
 // The rule on the energy over a window of steps: the steps end at the first step after which
 // the last `window` of them (all of them, while there are fewer) lowered the energy by less
 // than `window` times the tolerance, relatively, and not before. The steps are those of a
-// window of one, and a rule that one step fails holds over any window: a wider window takes
-// the same steps, and more of them.
+// window of one, and while each step gains more than the tolerance, so do the last `window`
+// together: a wider window takes the same steps, and at least as many.
 void test_tolerance_window(const Start& s)
 {
   std::vector<double> previous;
