@@ -194,7 +194,8 @@ public:
       build_newton_pattern();
     double first_trial = 1.; // of the line search; with the proxy, the last step taken
     bool factored = false;
-    std::vector<double> energies(1, r.energy_before); // as reported, after each step (window > 1)
+    double reported = r.energy_before; // E, or E * A with the area term, after the last step
+    std::vector<double> energies(1, reported); // the reported energies of the steps (window > 1)
     for(;;) {
       if(r.iterations >= settings.max_iterations) { r.stop = Sander_polish_stop::ITERATION_CAP; break; }
       if(settings.time_budget > 0. && seconds() >= settings.time_budget) {
@@ -259,6 +260,7 @@ public:
       m_x.swap(m_trial);
       const double decrease = E - E_new;
       E = E_new;
+      reported = m_area_term ? product_of(m_x) : E;
       ++r.iterations;
 
       bool go_on = true;
@@ -268,18 +270,18 @@ public:
         s.iteration = r.iterations;
         s.measures = m_stretch.evaluate(m, m_current, settings.threads);
         s.l2_stretch = s.measures.l2;
-        s.energy = m_area_term ? product_of(m_x) : E;
+        s.energy = reported;
         s.seconds = seconds();
         s.uv = &m_current;
         go_on = visitor(s);
       }
-      if(converged(decrease, E, settings, energies)) { r.stop = Sander_polish_stop::CONVERGED; break; }
+      if(converged(decrease, E, reported, settings, energies)) { r.stop = Sander_polish_stop::CONVERGED; break; }
       if(!go_on) { r.stop = Sander_polish_stop::VISITOR; break; }
     }
 
     if(r.iterations > 0) { // every step taken lowered the energy (E * A with the area term)
       write(uv);
-      r.energy_after = m_area_term ? product_of(m_x) : E;
+      r.energy_after = reported;
       r.l2_after = m_stretch.evaluate(m, uv, settings.threads).l2;
     }
     r.seconds = seconds();
@@ -291,14 +293,15 @@ public:
 
 private:
   // Whether a step that lowered the energy by `decrease` to `E` ends the steps: with a window of
-  // one step, by that decrease; with a wider one, by the energy as reported (E, or E * A with
-  // the area term, whose E changes with mu from step to step) over the last steps, appended to
-  // `energies`.
-  bool converged(double decrease, double E, const Sander_polish_settings& settings, std::vector<double>& energies) const
+  // one step, by that decrease; with a wider one, by the energy as reported (`reported`: E, or
+  // E * A with the area term, whose E changes with mu from step to step) over the last steps,
+  // appended to `energies`.
+  static bool converged(double decrease, double E, double reported, const Sander_polish_settings& settings,
+                        std::vector<double>& energies)
   {
     if(settings.tolerance_window <= 1)
       return decrease <= settings.tolerance * E;
-    energies.push_back(m_area_term ? product_of(m_x) : E);
+    energies.push_back(reported);
     const std::size_t k = (std::min)(std::size_t(settings.tolerance_window), energies.size() - 1);
     const double now = energies.back();
     return energies[energies.size() - 1 - k] - now <= double(k) * settings.tolerance * now;
