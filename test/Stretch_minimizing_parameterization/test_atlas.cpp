@@ -1376,6 +1376,12 @@ void packing_search()
     const long side = I::place_charts(masks, area, limit, at_x, at_y, turn);
     SMP_CHECK(side > 0, "packing search, trial " << trial << ": the charts did not fit");
     if(side <= 0) continue;
+    // search_layout() lays out on twice the texture's side: a layout that fits is the same
+    std::vector<long> wide_x, wide_y;
+    std::vector<int> wide_turn;
+    SMP_CHECK(I::place_charts(masks, area, 2 * limit, wide_x, wide_y, wide_turn) == side && wide_x == at_x &&
+              wide_y == at_y && wide_turn == turn,
+              "packing search, trial " << trial << ": another layout on a grid twice as wide");
 
     // the same charts placed again by trying every corner and every turn
     std::vector<char> taken(std::size_t(limit * limit), 0);

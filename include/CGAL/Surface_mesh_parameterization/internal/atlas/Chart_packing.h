@@ -294,11 +294,16 @@ public:
     for(long y = 0; y + m.height() <= bound; ++y) {
       // past these rows, no place is better: either the square or the top grows
       if(best_side >= 0 && (best_side == side ? y + m.height() >= best_top : y + m.height() > best_side)) break;
+      // the chart's right end, past which a place here is no better than the best one: once a
+      // place grows the square, one in a higher row has to keep it smaller, or as small with
+      // a lower top (the leftmost place in the row is the only one weighed, so leaving out
+      // those past this end changes nothing, and rows without room for it are passed at once)
+      const long end = best_side < 0 || y + m.height() < best_top ? bound : best_side - 1;
       bool room = true; // rows whose longest free run is shorter than the chart's span there
       for(std::size_t i = 0; i < probes && room; ++i)
-        room = y + m.widest[i].second >= height() || free_run(y + m.widest[i].second, bound) >= m.widest[i].first;
+        room = y + m.widest[i].second >= height() || free_run(y + m.widest[i].second, end) >= m.widest[i].first;
       if(!room) continue;
-      const long r = y + wide_row, right = bound - m.width; // the last corner x worth trying
+      const long r = y + wide_row, right = end - m.width; // the last corner x worth trying
       long gap_begin = 0, x_found = -1;
       const std::size_t spans = r < height() ? rows_[std::size_t(r)].size() : 0;
       for(std::size_t i = 0; i <= spans && x_found < 0; ++i) {
@@ -488,7 +493,9 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   const std::size_t n = in.area.size();
   Packing_layout trial;
   std::vector<double> size = in.area;
-  const auto pack = [&](double at) { // the side of the square at scale `at`, -1 beyond the texture
+  // the side of the square at scale `at`, laid out on twice the texture's side so that a scale
+  // too large still tells by how much (the layouts that fit are the same), -1 beyond that
+  const auto pack = [&](double at) {
     std::vector<std::array<Chart_mask, 4> > masks(n);
     parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
       for(std::size_t k = 0; k < 2; ++k) {
@@ -499,7 +506,7 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
     if(by == Packing_order::AREA_AND_BOX)
       for(std::size_t c = 0; c < n; ++c)
         size[c] = std::sqrt(in.area[c] * double(masks[c][0].width) * double(masks[c][0].height()));
-    trial.side = place_charts(masks, size, cells, trial.x, trial.y, trial.turn);
+    trial.side = place_charts(masks, size, 2 * cells, trial.x, trial.y, trial.turn);
     trial.scale = at;
     trial.shift.assign(n, Vec2{0., 0.});
     for(std::size_t c = 0; c < n && trial.side > 0; ++c)
@@ -508,7 +515,7 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
         trial.shift[c] = half_turn_shift(masks[c][std::size_t(trial.turn[c] - 2)],
                                          trial.turn[c] == 3 ? Vec2{e[1], e[0]} : e, at, pad);
       }
-    if(trial.side > 0 && at > best.scale)
+    if(trial.side > 0 && trial.side <= cells && at > best.scale)
       best = trial;
     return trial.side;
   };
@@ -521,10 +528,10 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   int misses = 0;
   for(int round = 0; round < tries; ++round) {
     const long side = pack(scale);
-    if(side > 0.98 * double(cells)) break;
-    if(side < 0) too_large = (std::min)(too_large, scale);
-    // a first scale that does not fit is mostly the coarse estimate's, a little too hopeful:
-    // just below it the square is most often still within the window above
+    if(side > 0.98 * double(cells) && side <= cells) break;
+    if(side < 0 || side > cells) too_large = (std::min)(too_large, scale);
+    // a scale that does not fit even twice the texture: a first one is mostly the coarse
+    // estimate's, a little too hopeful, and just below it the square is most often in the window
     misses += side < 0;
     double next = side > 0 ? scale * 0.995 * double(cells) / double(side) : (misses == 1 ? 0.985 : 0.85) * scale;
     if(next <= best.scale || next >= too_large)
