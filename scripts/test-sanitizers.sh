@@ -2,7 +2,7 @@
 # Builds the tests with AddressSanitizer and UndefinedBehaviorSanitizer in build/asan and runs
 # them, against CGAL 6.1.1 when ../shared/cgal holds its headers (CI: the release build of
 # scripts/test.sh uses Debian's CGAL 5.5.1, so one CI run builds and tests both), else against
-# Debian's CGAL; then, against the same CGAL, compiles the examples, the tools and the benchmark
+# Debian's CGAL; meanwhile, against the same CGAL, compiles the examples, the tools and the benchmark
 # without code generation (-fsyntax-only: every template they use instantiated and checked, in a
 # fraction of a build's time; scripts/test.sh builds and runs them).
 set -euo pipefail
@@ -25,11 +25,16 @@ fi
 cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" \
   -DSMP_SANITIZE=ON "${cgal[@]}" -DSMP_BUILD_TESTS=ON -DSMP_BUILD_EXAMPLES=OFF -DSMP_WITH_UMFPACK=OFF
 cmake --build build/asan -j2
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-  ctest --test-dir build/asan --output-on-failure -j2
 
+# The examples, tools and benchmark are compiled while the tests run: the longest tests end
+# alone, each on one core, and the compilers take the other.
 cmake -S . -B build/syntax "${cgal[@]}" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
   -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=ON -DSMP_BUILD_TOOLS=ON -DSMP_BUILD_BENCHMARK=ON
 jq -r '.[] | "cd \(.directory | @sh) && \(.command) -fsyntax-only"' build/syntax/compile_commands.json |
-  xargs -d '\n' -P 2 -I '{}' bash -c '{}'
+  xargs -d '\n' -P 2 -I '{}' bash -c '{}' &
+syntax=$!
+trap 'kill "$syntax" 2>/dev/null || true' EXIT
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+  ctest --test-dir build/asan --output-on-failure -j2
+wait "$syntax"
 echo "test-sanitizers: examples, tools and benchmark compile"
