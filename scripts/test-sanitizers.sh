@@ -27,7 +27,8 @@ cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-
 cmake --build build/asan -j2
 
 # The examples, tools and benchmark are compiled while the tests run: the longest tests end
-# alone, each on one core, and the compilers take the other.
+# alone on one core, and sharing the cores with the compilers ends the stage sooner than
+# compiling after the tests, though each test takes longer.
 cmake -S . -B build/syntax "${cgal[@]}" -DCMAKE_EXPORT_COMPILE_COMMANDS=ON \
   -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=ON -DSMP_BUILD_TOOLS=ON -DSMP_BUILD_BENCHMARK=ON
 jq -r '.[] | "cd \(.directory | @sh) && \(.command) -fsyntax-only"' build/syntax/compile_commands.json |

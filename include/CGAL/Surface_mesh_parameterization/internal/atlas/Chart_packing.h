@@ -508,15 +508,16 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
         size[c] = std::sqrt(in.area[c] * double(masks[c][0].width) * double(masks[c][0].height()));
     trial.side = place_charts(masks, size, 2 * cells, trial.x, trial.y, trial.turn);
     trial.scale = at;
+    if(trial.side <= 0 || trial.side > cells || at <= best.scale)
+      return trial.side; // not kept
     trial.shift.assign(n, Vec2{0., 0.});
-    for(std::size_t c = 0; c < n && trial.side > 0; ++c)
+    for(std::size_t c = 0; c < n; ++c)
       if(trial.turn[c] >= 2) { // half_turned() of the chart turned by turn - 2
         const Vec2& e = in.extent[c];
         trial.shift[c] = half_turn_shift(masks[c][std::size_t(trial.turn[c] - 2)],
                                          trial.turn[c] == 3 ? Vec2{e[1], e[0]} : e, at, pad);
       }
-    if(trial.side > 0 && trial.side <= cells && at > best.scale)
-      best = trial;
+    best = trial;
     return trial.side;
   };
   // the side grows about linearly with the scale: aim at the texture's side, between the
