@@ -30,7 +30,7 @@ Loaded_renderer load_renderer()
   std::vector<std::string> candidates;
   if(!ec) {
     candidates.push_back((executable.parent_path() / SMP_RENDER_MODULE).string());
-    candidates.push_back((executable.parent_path() / SMP_RENDER_MODULE_FROM_BINDIR / SMP_RENDER_MODULE).string());
+    candidates.push_back((executable.parent_path() / SMP_RENDER_MODULE_FROM_PROGRAM / SMP_RENDER_MODULE).string());
   }
   candidates.push_back(SMP_RENDER_MODULE);
   for(const std::string& file : candidates) {

@@ -10,11 +10,9 @@
 
 #if defined(__GLIBC__)
 #include <malloc.h>
-#include <unistd.h>
 #endif
 
 #include <cstdlib>
-#include <cstring>
 #include <iostream>
 #include <new>
 #include <string>
@@ -43,32 +41,11 @@ inline void keep_freed_memory()
 #endif
 }
 
-// Starts the tool again with transparent huge pages for the memory of malloc (glibc 2.35's
-// tunable glibc.malloc.hugetlb, read at the start of a process only), unless the environment
-// sets that tunable already. The factorizations of large meshes map blocks of hundreds of MiB
-// anew at every step, a page fault per 4 KiB page on first use, and page faults are costly on
-// virtual machines; a huge page takes one fault for 2 MiB. Returns if the new start fails.
-inline void restart_with_huge_pages(char** argv)
-{
-#if defined(__GLIBC__) && (__GLIBC__ > 2 || (__GLIBC__ == 2 && __GLIBC_MINOR__ >= 35))
-  const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if(tunables != nullptr && std::strstr(tunables, "glibc.malloc.hugetlb") != nullptr)
-    return;
-  const std::string value = tunables != nullptr && *tunables != '\0' ? std::string(tunables) + ":glibc.malloc.hugetlb=1"
-                                                                       : std::string("glibc.malloc.hugetlb=1");
-  if(setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0)
-    execv("/proc/self/exe", argv);
-#else
-  static_cast<void>(argv);
-#endif
-}
-
 // `run(argc, argv)`, what it throws made a message and exit status 1 (the tools write their
 // outputs atomically, so this never leaves a partial file).
 template <typename Run>
 int run_guarded(const std::string& tool, Run run, int argc, char** argv)
 {
-  restart_with_huge_pages(argv);
   keep_freed_memory();
   try {
     return run(argc, argv);

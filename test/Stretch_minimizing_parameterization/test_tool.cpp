@@ -421,16 +421,24 @@ void check_remesh()
 }
 
 // The surface renderer is a module loaded at run time: a tool without it stops before it
-// writes anything when pictures are asked for, and runs in full without them.
+// writes anything when pictures are asked for, and runs in full without them. A tool's command
+// is a launcher of its program (in libexec/ beside it in the build tree): without the program, it
+// says so.
 void check_missing_renderer()
 {
   fs::remove_all("lone");
-  fs::create_directories("lone");
+  fs::create_directories("lone/libexec");
   for(const std::string tool : {std::string(SMP_TOOL), std::string(SMP_REMESH_TOOL)})
     fs::copy_file(tool, fs::path("lone") / fs::path(tool).filename());
   const std::string parameterize = "lone/" + fs::path(SMP_TOOL).filename().string();
   const std::string remesh = "lone/" + fs::path(SMP_REMESH_TOOL).filename().string();
   const std::string nefertiti = smp_test::data_file("nefertiti.off");
+  check_error("no program", nefertiti + " --no-pictures -o lone/out", "cannot start", parameterize);
+  check_error("remesh: no program", nefertiti + " -n 300 -o lone/remeshed.off", "cannot start", remesh);
+  for(const std::string tool : {std::string(SMP_TOOL), std::string(SMP_REMESH_TOOL)}) {
+    const fs::path program = fs::path(tool).parent_path() / "libexec" / fs::path(tool).filename();
+    fs::copy_file(program, fs::path("lone/libexec") / program.filename());
+  }
   check_error("no renderer", nefertiti + " -o lone/out", "renderer", parameterize);
   check_error("no renderer, atlas", nefertiti + " --atlas -o lone/out_atlas", "renderer", parameterize);
   check_error("remesh: no renderer", nefertiti + " -n 300 -o lone/remeshed.off --picture lone/remeshed.png",
