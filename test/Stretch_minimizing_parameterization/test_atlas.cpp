@@ -1007,6 +1007,27 @@ void parts_count()
   SMP_CHECK(I::number_of_parts(HUGE_VAL, 1.05) == 2, I::number_of_parts(HUGE_VAL, 1.05));
 }
 
+// When the Newton steps of a chart end: within the bound, at a step that gains little; above it,
+// once the pace of the last step, allowance included, no longer reaches the bound in the steps
+// left (the energy 4 at L2 stretch 2 is 1.1025 at the bound 1.05: 8 steps left at 4 times a gain
+// of 0.0905 reach it), never after the first step, always after the last.
+void polish_steps_end()
+{
+  namespace I = SMP::internal;
+  I::Chart_parameterization_settings s;
+  s.max_stretch = 1.05;
+  s.polish_iterations = 10;
+  s.polish_tolerance = 1e-4;
+  s.pace_allowance = 4.;
+  SMP_CHECK(!I::polish_goes_on(1., 0.99999, 1.01, 3, s), "within the bound, a step gaining 1e-5 goes on");
+  SMP_CHECK(I::polish_goes_on(1., 0.99, 1.01, 3, s), "within the bound, a step gaining 1e-2 ends the steps");
+  SMP_CHECK(I::polish_goes_on(HUGE_VAL, 4., 2., 1, s) && I::polish_goes_on(4.0001, 4., 2., 1, s),
+            "above the bound, the first step ends the steps");
+  SMP_CHECK(!I::polish_goes_on(4.09, 4., 2., 2, s), "above the bound, a pace too slow goes on");
+  SMP_CHECK(I::polish_goes_on(4.091, 4., 2., 2, s), "above the bound, a pace that may reach it ends the steps");
+  SMP_CHECK(!I::polish_goes_on(8., 4., 2., 10, s), "above the bound, the last step goes on");
+}
+
 // The parts a chart is cut into are each in one piece: a piece of a part cut off from its
 // largest piece goes to the neighbouring part it shares the most edges with, also when it only
 // touches other detached pieces at first; a piece that no other part touches stays.
@@ -1459,6 +1480,7 @@ int main(int argc, char** argv)
   loop_triangulations();
   call_independence();
   parts_count();
+  polish_steps_end();
   detached_pieces();
   growing_taken_back();
   join_taken_back();

@@ -73,9 +73,11 @@ struct Chart_parameterization_settings
   unsigned int polish_iterations = 10;   // free-border Newton steps
   // the Newton steps of a map that is within `max_stretch` end at a step that lowers the
   // energy by less than this, relatively: coarser than the polisher's own tolerance, as each of
-  // the last steps costs a factorization for a gain far below the bound. A map above the bound
-  // is polished on (whether it ends within the bound, and where it is cut if not, depend on it).
+  // the last steps costs a factorization for a gain far below the bound
   double polish_tolerance = 1e-4;
+  // the Newton steps of a map above the bound go on while this many times the pace of the last
+  // step would bring it within the bound in the steps left (see polish_goes_on())
+  double pace_allowance = 4.;
   double max_stretch = HUGE_VAL;         // a conformal map at most this stretched is kept as it is
   unsigned int threads = 1;              // of the polish of one chart (the map does not depend on it)
   // charts of this many vertices or more are polished by split Newton steps, within the bound
@@ -114,12 +116,25 @@ inline Chart_parameterization_settings first_in_batch(const std::vector<Chart_ma
   return first;
 }
 
-// Whether the Newton steps of a chart go on after a step that took their energy from `before`
-// to `after` (the normalized L2 stretch `l2` then): while a step gains more than
-// `polish_tolerance` relatively, or the map is above the bound.
-inline bool polish_goes_on(double before, double after, double l2, const Chart_parameterization_settings& settings)
+// Whether the Newton steps of a chart go on after their step `done` (from 1) took the energy
+// from `before` to `after` (the normalized L2 stretch `l2` then). Within the bound: while a step
+// gains more than `polish_tolerance` relatively. Above it: after the first step (whose gain
+// follows the start or the descent steps, not a Newton step), while `pace_allowance` times the
+// step's gain in each step left could bring the energy, which goes as the square of the stretch,
+// to the bound; the allowance is for the steps that speed up once a fold no longer cuts them
+// short. Past that, the chart is cut whatever its last steps do, and where depends on a stretch
+// they barely change, while each of them costs a factorization.
+inline bool polish_goes_on(double before, double after, double l2, unsigned int done,
+                           const Chart_parameterization_settings& settings)
 {
-  return before - after > settings.polish_tolerance * after || !(l2 <= settings.max_stretch);
+  const double gain = before - after;
+  if(l2 <= settings.max_stretch)
+    return gain > settings.polish_tolerance * after;
+  if(done < 2)
+    return true;
+  const double left = double(settings.polish_iterations) - double(done);
+  const double at_bound = after * (settings.max_stretch / l2) * (settings.max_stretch / l2);
+  return settings.pace_allowance * left * gain >= after - at_bound;
 }
 
 // Numbers the chart vertices of `triangles` and fills `chart.flat`.
@@ -253,7 +268,7 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
     const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
       const double before = energy;
       energy = step.energy;
-      return polish_goes_on(before, step.energy, step.l2_stretch, settings);
+      return polish_goes_on(before, step.energy, step.l2_stretch, unsigned(step.iteration), settings);
     };
     Sander_energy_polisher<> polisher;
     if(polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
@@ -283,10 +298,13 @@ inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd,
   // the Newton steps end as those from the conformal map do (the energy goes as the square of
   // the L2 stretch)
   double last_l2 = HUGE_VAL;
+  unsigned int newton_steps = 0;
   const std::function<bool(const Stretch_minimizing_step&)> enough = [&](const Stretch_minimizing_step& step) {
     const double before = last_l2, l2 = step.l2_stretch;
     last_l2 = l2;
-    return !step.polish || step.descent || polish_goes_on(before * before, l2 * l2, l2, settings);
+    if(!step.polish || step.descent)
+      return true;
+    return polish_goes_on(before * before, l2 * l2, l2, ++newton_steps, settings);
   };
   Stretch_minimizing_parameterizer_3<Chart_mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
       .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u).visitor(enough));
