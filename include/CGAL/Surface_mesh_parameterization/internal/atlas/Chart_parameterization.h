@@ -80,9 +80,6 @@ struct Chart_parameterization_settings
   double pace_allowance = 4.;
   double max_stretch = HUGE_VAL;         // a conformal map at most this stretched is kept as it is
   unsigned int threads = 1;              // of the polish of one chart (the map does not depend on it)
-  // charts of this many vertices or more are polished by split Newton steps, within the bound
-  // or not (below, by the coupled steps where the start is above the bound)
-  std::size_t split_newton_vertices = 10000;
   // a boundary-first map above this L2 stretch gives way to LSCM's (see flatten_from_conformal())
   double boundary_first_limit = 2.;
 };
@@ -254,12 +251,10 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
       continue;
     // the polisher refuses a start with a flipped or flat face, or a border that is not simple
     Sander_polish_settings ps;
-    // A map within the bound is only refined: the split Newton steps (u and v apart, an eighth
-    // of the flops to factor) do that about as well as the coupled ones. A map above it may have
-    // far to go to come under the bound, which the coupled steps cover in fewer steps, unless
-    // the chart is large: the coupled factorizations then cost more than the extra split steps.
-    const bool split = flat.xyz.size() >= settings.split_newton_vertices || l2 <= settings.max_stretch;
-    ps.direction = split ? Sander_polish_direction::SPLIT_NEWTON : Sander_polish_direction::NEWTON;
+    // Split Newton steps (u and v apart, an eighth of the flops to factor): from a map within
+    // the bound as from one above it, in the steps allowed, they come within the bound about as
+    // often as the coupled steps, in less time.
+    ps.direction = Sander_polish_direction::SPLIT_NEWTON;
     ps.free_border = true;
     ps.threads = settings.threads;
     ps.supernodal_blas = false; // charts are flattened on several threads at once
