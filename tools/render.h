@@ -4,9 +4,10 @@
 // Pictures of a parameterized triangle mesh, written as PNG: the uv layout coloured by stretch
 // (Cairo), the checkerboard texture itself, and the surface rendered off-screen (OSMesa, Mesa's
 // software OpenGL) with the checkerboard or with a stretch colour map. Kept free of CGAL so that
-// it compiles fast in a translation unit of its own. The surface renderer lives in a module of
-// its own (render_surface.cpp), loaded on first use: OSMesa brings LLVM, whose loading would
-// otherwise cost every run of the tools, pictures or not, a noticeable startup time.
+// it compiles fast in a translation unit of its own. What Cairo or OSMesa draws lives in a
+// module of its own (render_layout.cpp, render_surface.cpp), loaded on first use: OSMesa brings
+// LLVM and Cairo a dozen libraries, whose loading would otherwise cost every run of the tools,
+// pictures or not, a noticeable startup time. The checkerboard is written with libpng alone.
 
 #ifndef SMP_TOOLS_RENDER_H
 #define SMP_TOOLS_RENDER_H
@@ -32,7 +33,7 @@ struct Textured_mesh
 std::array<double, 3> stretch_color(double stretch);
 
 // Writes RGBA rows stored bottom-up (OpenGL's order) as an opaque PNG. False on failure (nothing
-// is left then).
+// is left then). In the module only (render_layout.cpp).
 bool write_rgba_png(const std::string& file, const std::vector<unsigned char>& rgba, int width, int height);
 
 // The checkerboard of the texture, `checks` squares a side on `size` x `size` texels: whether
@@ -55,7 +56,8 @@ bool write_checkerboard_png(const std::string& file, int size, int checks);
 std::array<double, 3> chart_color(int chart);
 
 // Draws the uv layout in the unit square, faces filled by stretch colour, or by chart colour if
-// `by_chart` (and `mesh.face_chart` is given). False on failure.
+// `by_chart` (and `mesh.face_chart` is given). False on failure, or if the module that draws it
+// cannot be loaded (see load_surface_renderer()).
 bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size, bool by_chart = false);
 
 // Renders the surface with model axis `up` (0: x, 1: y, 2: z) upwards, seen from `yaw` degrees
@@ -67,15 +69,19 @@ bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int
 std::string render_surface_png(const std::string& file, const Textured_mesh& mesh, int width, int height,
                                int up, double yaw, double pitch, bool checkerboard, int checks, bool edges = false);
 
-// Loads the surface renderer's module if it is not yet loaded: an empty string if it is there,
-// else why not. The tools call it before they start, so that a missing module stops them before
-// they write anything.
+// Loads the module that draws the uv layouts and renders the surfaces if it is not yet loaded:
+// an empty string if it is there, else why not. The tools call it before they start, so that a
+// missing module stops them before they write anything.
 std::string load_surface_renderer();
 
 // The signature of render_surface_png(), which the module exports as
 // `smp_tools_render_surface_png` (render_surface.cpp).
 typedef std::string (*Render_surface_function)(const std::string&, const Textured_mesh&, int, int, int, double,
                                                double, bool, int, bool);
+
+// The signature of write_uv_layout_png(), which the module exports as
+// `smp_tools_write_uv_layout_png` (render_layout.cpp).
+typedef bool (*Write_uv_layout_function)(const std::string&, const Textured_mesh&, int, bool);
 
 } // namespace smp_tools
 

@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// render_surface_png() of render.h: loads the renderer module (render_surface.cpp) on first
-// use. The module is looked for beside the executable (the build tree), then where the install
+// render_surface_png() and write_uv_layout_png() of render.h: load the renderer module
+// (render_surface.cpp, render_layout.cpp) on first use. The module is looked for beside the executable (the build tree), then where the install
 // puts it relative to the executable, then by the dynamic loader's own search.
 
 #include "render.h"
@@ -19,6 +19,7 @@ namespace {
 struct Loaded_renderer
 {
   Render_surface_function render = nullptr;
+  Write_uv_layout_function layout = nullptr;
   std::string error;
 };
 
@@ -43,15 +44,18 @@ Loaded_renderer load_renderer()
         result.error = "cannot load the surface renderer: " + std::string(why ? why : file);
       continue;
     }
-    typedef Render_surface_function (*Entry)();
-    const Entry entry = reinterpret_cast<Entry>(dlsym(module, "smp_tools_render_surface_png"));
-    if(entry == nullptr) {
+    typedef Render_surface_function (*Render_entry)();
+    typedef Write_uv_layout_function (*Layout_entry)();
+    const Render_entry render = reinterpret_cast<Render_entry>(dlsym(module, "smp_tools_render_surface_png"));
+    const Layout_entry layout = reinterpret_cast<Layout_entry>(dlsym(module, "smp_tools_write_uv_layout_png"));
+    if(render == nullptr || layout == nullptr) {
       if(result.error.empty())
-        result.error = file + " is not the surface renderer (no smp_tools_render_surface_png)";
+        result.error = file + " is not the surface renderer (no smp_tools_render_surface_png or smp_tools_write_uv_layout_png)";
       dlclose(module);
       continue;
     }
-    result.render = entry(); // the module stays loaded until the process ends
+    result.render = render(); // the module stays loaded until the process ends
+    result.layout = layout();
     result.error.clear();
     return result;
   }
@@ -77,6 +81,11 @@ std::string render_surface_png(const std::string& file, const Textured_mesh& mes
   if(renderer().render == nullptr)
     return renderer().error;
   return renderer().render(file, mesh, width, height, up, yaw, pitch, checkerboard, checks, edges);
+}
+
+bool write_uv_layout_png(const std::string& file, const Textured_mesh& mesh, int size, bool by_chart)
+{
+  return renderer().layout != nullptr && renderer().layout(file, mesh, size, by_chart);
 }
 
 } // namespace smp_tools
