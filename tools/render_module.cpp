@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // render_surface_png() and write_uv_layout_png() of render.h: load the renderer module
-// (render_surface.cpp, render_layout.cpp) on first use. The module is looked for beside the executable (the build tree), then where the install
-// puts it relative to the executable, then by the dynamic loader's own search.
+// (render_surface.cpp, render_layout.cpp) on first use. The module is looked for beside the
+// executable (the build tree), then where the install puts it relative to the executable, then
+// by the dynamic loader's own search.
 
 #include "render.h"
 
