@@ -1403,6 +1403,12 @@ void packing_search()
     SMP_CHECK(I::place_charts(masks, area, 2 * limit, wide_x, wide_y, wide_turn) == side && wide_x == at_x &&
               wide_y == at_y && wide_turn == turn,
               "packing search, trial " << trial << ": another layout on a grid twice as wide");
+    // the half turns searched on a second thread: the same layout
+    std::vector<long> two_x, two_y;
+    std::vector<int> two_turn;
+    SMP_CHECK(I::place_charts(masks, area, limit, two_x, two_y, two_turn, 2) == side && two_x == at_x &&
+              two_y == at_y && two_turn == turn,
+              "packing search, trial " << trial << ": another layout with the half turns on a second thread");
 
     // the same charts placed again by trying every corner and every turn
     std::vector<char> taken(std::size_t(limit * limit), 0);

@@ -26,10 +26,12 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iterator>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -344,10 +346,14 @@ private:
 
 // Places the charts, the largest `size` first, each in the quarter turn and at the place that
 // keeps the square holding them all smallest: inside the square so far where the chart's top
-// rests lowest, else where the square grows least. Returns the side of the square, -1 if it
-// would exceed `limit` cells.
+// rests lowest, else where the square grows least (ties: the lower turn). Returns the side of
+// the square, -1 if it would exceed `limit` cells. With `threads` >= 2, a second thread searches
+// the half turns while this one searches the others: the place of each pair of turns is the
+// best of the pair whatever the other pair found (that only bounds the search), so the layout is
+// the same.
 inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, const std::vector<double>& size,
-                         long limit, std::vector<long>& at_x, std::vector<long>& at_y, std::vector<int>& turn)
+                         long limit, std::vector<long>& at_x, std::vector<long>& at_y, std::vector<int>& turn,
+                         unsigned int threads = 1)
 {
   const std::size_t n = masks.size();
   std::vector<std::size_t> order(n);
@@ -358,16 +364,67 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
   Occupancy occupancy(limit);
   at_x.assign(n, 0); at_y.assign(n, 0); turn.assign(n, 0);
   long side = 0;
-  for(std::size_t i : order) {
-    long best_side = -1, best_top = -1;
-    for(int k = 0; k < 4; ++k)
-      if(occupancy.best_place(masks[i][std::size_t(k)], side, best_side, best_top, at_x[i], at_y[i]))
-        turn[i] = k;
-    if(best_side < 0) return -1;
-    occupancy.take(masks[i][std::size_t(turn[i])], at_x[i], at_y[i]);
-    side = best_side;
+  struct Place { long side = -1, top = -1, x = 0, y = 0; int turn = 0; };
+  // the best place of chart i in turns `first` and `first` + 1
+  const auto best_of = [&](std::size_t i, int first) {
+    Place p;
+    for(int k = first; k < first + 2; ++k)
+      if(occupancy.best_place(masks[i][std::size_t(k)], side, p.side, p.top, p.x, p.y))
+        p.turn = k;
+    return p;
+  };
+  // the half turns' search on a second thread, a chart at a time: `task` is the chart to place
+  // (none: n), set by this thread and taken back by the other once `half` holds its place
+  constexpr std::size_t none = std::size_t(-1);
+  std::atomic<std::size_t> task(none);
+  std::atomic<bool> done(false), stop(false);
+  Place half;
+  std::thread helper;
+  if(threads >= 2 && n >= 2) {
+    try {
+      helper = std::thread([&]() {
+        for(;;) {
+          std::size_t i = task.load(std::memory_order_acquire);
+          for(; i == none; i = task.load(std::memory_order_acquire)) {
+            if(stop.load(std::memory_order_acquire)) return;
+            std::this_thread::yield();
+          }
+          half = best_of(i, 2);
+          task.store(none, std::memory_order_relaxed);
+          done.store(true, std::memory_order_release);
+        }
+      });
+    } catch(const std::exception&) {
+      // no thread: every turn is searched here
+    }
   }
-  return side;
+  long result = 0;
+  for(std::size_t i : order) {
+    Place p;
+    if(helper.joinable()) {
+      done.store(false, std::memory_order_relaxed);
+      task.store(i, std::memory_order_release);
+      p = best_of(i, 0);
+      while(!done.load(std::memory_order_acquire))
+        std::this_thread::yield();
+      if(half.side >= 0 && (p.side < 0 || half.side < p.side || (half.side == p.side && half.top < p.top)))
+        p = half;
+    } else {
+      p = best_of(i, 0);
+      const Place q = best_of(i, 2);
+      if(q.side >= 0 && (p.side < 0 || q.side < p.side || (q.side == p.side && q.top < p.top)))
+        p = q;
+    }
+    if(p.side < 0) { result = -1; break; }
+    at_x[i] = p.x; at_y[i] = p.y; turn[i] = p.turn;
+    occupancy.take(masks[i][std::size_t(p.turn)], p.x, p.y);
+    side = result = p.side;
+  }
+  if(helper.joinable()) {
+    stop.store(true, std::memory_order_release);
+    helper.join();
+  }
+  return result;
 }
 
 // The chart `uv` (its lower left corner at the origin, `extent` wide and high) turned by
@@ -506,7 +563,7 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
     if(by == Packing_order::AREA_AND_BOX)
       for(std::size_t c = 0; c < n; ++c)
         size[c] = std::sqrt(in.area[c] * double(masks[c][0].width) * double(masks[c][0].height()));
-    trial.side = place_charts(masks, size, 2 * cells, trial.x, trial.y, trial.turn);
+    trial.side = place_charts(masks, size, 2 * cells, trial.x, trial.y, trial.turn, thread_count(threads));
     trial.scale = at;
     if(trial.side <= 0 || trial.side > cells || at <= best.scale)
       return trial.side; // not kept
