@@ -365,31 +365,45 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
   at_x.assign(n, 0); at_y.assign(n, 0); turn.assign(n, 0);
   long side = 0;
   struct Place { long side = -1, top = -1, x = 0, y = 0; int turn = 0; };
-  // the best place of chart i in turns `first` and `first` + 1
-  const auto best_of = [&](std::size_t i, int first) {
-    Place p;
+  // the best place of chart i in turns `first` and `first` + 1 if better than `p`, else `p`
+  const auto best_of = [&](std::size_t i, int first, Place p) {
     for(int k = first; k < first + 2; ++k)
       if(occupancy.best_place(masks[i][std::size_t(k)], side, p.side, p.top, p.x, p.y))
         p.turn = k;
     return p;
   };
+  // whether `q` (of higher turns) is a better place than `p`
+  const auto better = [](const Place& q, const Place& p) {
+    return q.side >= 0 && (p.side < 0 || q.side < p.side || (q.side == p.side && q.top < p.top));
+  };
   // the half turns' search on a second thread, a chart at a time: `task` is the chart to place
-  // (none: n), set by this thread and taken back by the other once `half` holds its place
+  // (`none`: no chart), set by this thread and taken back by the other once `half` holds its
+  // place; the thread is stopped and joined however this function ends
   constexpr std::size_t none = std::size_t(-1);
   std::atomic<std::size_t> task(none);
   std::atomic<bool> done(false), stop(false);
   Place half;
-  std::thread helper;
+  struct Helper
+  {
+    std::thread thread;
+    std::atomic<bool>* stop;
+    ~Helper()
+    {
+      if(!thread.joinable()) return;
+      stop->store(true, std::memory_order_release);
+      thread.join();
+    }
+  } helper{std::thread(), &stop};
   if(threads >= 2 && n >= 2) {
     try {
-      helper = std::thread([&]() {
+      helper.thread = std::thread([&]() {
         for(;;) {
           std::size_t i = task.load(std::memory_order_acquire);
           for(; i == none; i = task.load(std::memory_order_acquire)) {
             if(stop.load(std::memory_order_acquire)) return;
             std::this_thread::yield();
           }
-          half = best_of(i, 2);
+          half = best_of(i, 2, Place());
           task.store(none, std::memory_order_relaxed);
           done.store(true, std::memory_order_release);
         }
@@ -398,33 +412,26 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
       // no thread: every turn is searched here
     }
   }
-  long result = 0;
   for(std::size_t i : order) {
     Place p;
-    if(helper.joinable()) {
+    if(helper.thread.joinable()) {
       done.store(false, std::memory_order_relaxed);
       task.store(i, std::memory_order_release);
-      p = best_of(i, 0);
+      p = best_of(i, 0, Place());
       while(!done.load(std::memory_order_acquire))
         std::this_thread::yield();
-      if(half.side >= 0 && (p.side < 0 || half.side < p.side || (half.side == p.side && half.top < p.top)))
+      if(better(half, p))
         p = half;
-    } else {
-      p = best_of(i, 0);
-      const Place q = best_of(i, 2);
-      if(q.side >= 0 && (p.side < 0 || q.side < p.side || (q.side == p.side && q.top < p.top)))
-        p = q;
+    } else { // the half turns bounded by the place of the others
+      p = best_of(i, 2, best_of(i, 0, Place()));
     }
-    if(p.side < 0) { result = -1; break; }
+    if(p.side < 0)
+      return -1;
     at_x[i] = p.x; at_y[i] = p.y; turn[i] = p.turn;
     occupancy.take(masks[i][std::size_t(p.turn)], p.x, p.y);
-    side = result = p.side;
+    side = p.side;
   }
-  if(helper.joinable()) {
-    stop.store(true, std::memory_order_release);
-    helper.join();
-  }
-  return result;
+  return side;
 }
 
 // The chart `uv` (its lower left corner at the origin, `extent` wide and high) turned by
