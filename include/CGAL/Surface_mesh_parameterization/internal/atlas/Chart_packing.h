@@ -231,6 +231,13 @@ inline Chart_mask::Span widest_span(const Chart_mask& m)
   return best;
 }
 
+// Whether a place that makes the square `side` and puts the chart's top at `top` is better than
+// the best one so far (`best_side`, `best_top`; -1: none): the smaller square, then the lower top.
+inline bool better_place(long side, long top, long best_side, long best_top)
+{
+  return best_side < 0 || side < best_side || (side == best_side && top < best_top);
+}
+
 // The cells taken so far in a strip of `width` columns: per row as in Chart_mask (the free
 // runs between them are where a chart may go) and as bits (where a chart's span is tested),
 // with what gives the longest free run of a row left of any column (rows above the top are free).
@@ -322,7 +329,7 @@ public:
       }
       if(x_found < 0) continue;
       const long square = (std::max)({side, x_found + m.width, y + m.height()});
-      if(best_side < 0 || square < best_side || (square == best_side && y + m.height() < best_top)) {
+      if(better_place(square, y + m.height(), best_side, best_top)) {
         best_side = square; best_top = y + m.height(); at_x = x_found; at_y = y;
         found = true;
       }
@@ -372,10 +379,6 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
         p.turn = k;
     return p;
   };
-  // whether `q` (of higher turns) is a better place than `p`
-  const auto better = [](const Place& q, const Place& p) {
-    return q.side >= 0 && (p.side < 0 || q.side < p.side || (q.side == p.side && q.top < p.top));
-  };
   // the half turns' search on a second thread, a chart at a time: `task` is the chart to place
   // (`none`: no chart), set by this thread and taken back by the other once `half` holds its
   // place; the thread is stopped and joined however this function ends
@@ -420,7 +423,7 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
       p = best_of(i, 0, Place());
       while(!done.load(std::memory_order_acquire))
         std::this_thread::yield();
-      if(better(half, p))
+      if(half.side >= 0 && better_place(half.side, half.top, p.side, p.top))
         p = half;
     } else { // the half turns bounded by the place of the others
       p = best_of(i, 2, best_of(i, 0, Place()));
