@@ -4,7 +4,8 @@
 # scripts/test.sh uses Debian's CGAL 5.5.1, so one CI run builds and tests both), else against
 # Debian's CGAL; meanwhile, against the same CGAL, compiles the examples, the tools and the benchmark
 # without code generation (-fsyntax-only: every template they use instantiated and checked, in a
-# fraction of a build's time; scripts/test.sh builds and runs them).
+# fraction of a build's time; scripts/test.sh builds and runs them). The tests leave their longest
+# runs on the largest meshes to the release build (SMP_TEST_SANITIZED, see smp_test_util.h).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 

@@ -31,6 +31,15 @@ inline int summary()
   return failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// Built with the sanitizers (SMP_SANITIZE), which run the code about ten times slower: the long
+// runs on the largest meshes (many steps, where what is checked is a figure, not a code path
+// that the smaller meshes miss) are left to the release build, which runs every case.
+#if defined(SMP_TEST_SANITIZED)
+constexpr bool sanitized = true;
+#else
+constexpr bool sanitized = false;
+#endif
+
 inline std::string data_file(const std::string& name) { return std::string(SMP_TEST_DATA_DIR) + "/" + name; }
 
 } // namespace smp_test

@@ -424,13 +424,16 @@ int main()
     {"nefertiti.off", true}, {"mesh_with_border.off", true}, {"holes.off", true}};
   for(const auto& mesh : meshes) {
     const std::string name = mesh.name;
+    if(smp_test::sanitized && name == "mannequin-devil.off")
+      continue;
     check_combinations(name);
     double paper = 0., lowest = 0.;
     check_presets(name, mesh.lower, &paper, &lowest);
     std::cout << name << ": L2 stretch, PAPER " << paper << ", LOWEST_STRETCH " << lowest << std::endl;
   }
   for(const char* name : {"mannequin-devil.off", "three_peaks.off", "mushroom.off", "holes.off"})
-    check_polish(name);
+    if(!smp_test::sanitized || std::string(name) != "mannequin-devil.off")
+      check_polish(name);
   check_chains("mushroom.off");
 
   // a time budget alone asks for the polish, which stops on it or converges; what it did in

@@ -233,8 +233,12 @@ void check_threads()
   l.bhd = CGAL::Polygon_mesh_processing::longest_border(m).first;
   for(bool lowest : {false, true}) {
     const auto preset = lowest ? SMP::Stretch_minimizing_preset::LOWEST_STRETCH : SMP::Stretch_minimizing_preset::PAPER;
-    Default_smp one(SMP::parameters::number_of_threads(1, SMP::parameters::preset(preset)).number_of_iterations(3));
-    Default_smp three(SMP::parameters::number_of_threads(3, SMP::parameters::preset(preset)).number_of_iterations(3));
+    // under the sanitizers, two descent steps: the same parallel code, run fewer times
+    const unsigned int descent = !lowest ? 0u : smp_test::sanitized ? 2u : SMP::lowest_stretch_descent_iterations;
+    Default_smp one(SMP::parameters::number_of_threads(1, SMP::parameters::preset(preset))
+                      .number_of_iterations(3).descent_iterations(descent));
+    Default_smp three(SMP::parameters::number_of_threads(3, SMP::parameters::preset(preset))
+                        .number_of_iterations(3).descent_iterations(descent));
     UV_map uv1 = new_uv(m, "v:uv_one"), uv3 = new_uv(m, "v:uv_three");
     check_run("52k vertices, 1 thread", m, l.bhd, one, uv1, SMP::parameterize(m, one, l.bhd, uv1));
     check_run("52k vertices, 3 threads", m, l.bhd, three, uv3, SMP::parameterize(m, three, l.bhd, uv3));

@@ -32,7 +32,10 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // is computed once and the factorizations are the same.
 inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& lower)
 {
-  const Eigen::SparseMatrix<double> full = lower.selfadjointView<Eigen::Lower>();
+  // assigned, not constructed: Eigen's constructor from a view leaks its column array when an
+  // allocation that follows throws (no destructor runs for an object whose constructor threw)
+  Eigen::SparseMatrix<double> full;
+  full = lower.selfadjointView<Eigen::Lower>();
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
   Eigen::AMDOrdering<int>()(full, order);
   return std::vector<int>(order.indices().data(), order.indices().data() + order.indices().size());
