@@ -12,8 +12,12 @@
 # build/fuzz/corpus across runs. A finding is written to build/fuzz/findings/ and fails the
 # script, which prints it in base64: reproduce it with
 # `build/fuzz/test/Stretch_minimizing_parameterization/fuzz/fuzz_smp FILE`, then make it a test.
+# `bash scripts/fuzz.sh --build-only` builds the harness and stops (CI builds it while the
+# sanitizer stage runs).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
+build_only=false
+if [ "${1:-}" = --build-only ]; then build_only=true; shift; fi
 seconds=${1:-120}
 jobs=${2:-1}
 seed=${3:-0} # 0: libFuzzer draws one
@@ -22,8 +26,9 @@ runs=${4:-0}
 bash scripts/install-deps.sh clang-14 libclang-rt-14-dev
 
 cmake -S . -B build/fuzz -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER=clang++-14 \
-  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g" -DSMP_BUILD_FUZZERS=ON -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=OFF
+  -DCMAKE_CXX_FLAGS_RELEASE="-O1 -gline-tables-only" -DSMP_BUILD_FUZZERS=ON -DSMP_BUILD_TESTS=OFF -DSMP_BUILD_EXAMPLES=OFF
 cmake --build build/fuzz -j2 --target fuzz_smp
+$build_only && exit 0
 
 seeds=build/fuzz/seeds
 corpus=build/fuzz/corpus
