@@ -3,7 +3,7 @@
 # (default 120; developers run it for hours: `bash scripts/fuzz.sh 3600`), on JOBS processes
 # (default 1), with the random seed SEED (default 0: a new one each run), for at most RUNS
 # inputs (default 0: no bound). With RUNS, one job starts from an empty corpus of its own: CI
-# runs `bash scripts/fuzz.sh 900 1 SEED RUNS`, the same amount of fuzzing on a slow machine as
+# runs `bash scripts/fuzz.sh 600 1 SEED RUNS`, the same amount of fuzzing on a slow machine as
 # on a fast one. (Not the same inputs: the coverage that steers the mutations varies from run
 # to run, so a finding is printed, below.) Inputs to
 # start from: the small bundled meshes and test/.../fuzz/seeds, made into inputs of each target
