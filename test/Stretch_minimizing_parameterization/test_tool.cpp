@@ -3,9 +3,11 @@
 //
 // smp-parameterize as a user meets it: on a small mesh, the OBJ reread with CGAL is the
 // library's result, the JSON report parses and agrees, the pictures have the asked size and
-// are not blank; each error a user will hit gives one line and a non-zero exit.
+// are not blank; each error a user will hit gives one line and a non-zero exit; the tools' plain
+// OFF reader gives what CGAL's reader gives.
 
 #include "smp_test_util.h"
+#include "smp_input.h"
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -451,8 +453,68 @@ void check_missing_renderer()
             "smp-remesh: no run without the renderer and without a picture");
 }
 
+// The tools' plain OFF reader gives CGAL's points and polygons, and leaves every other OFF file
+// to CGAL's reader (read_soup() then gives what CGAL's reader gives).
+void check_plain_off()
+{
+  typedef std::vector<Kernel::Point_3> Points;
+  typedef std::vector<std::vector<std::size_t> > Polygons;
+  auto same_as_cgal = [](const std::string& file, bool plain) {
+    Points cgal_points, points;
+    Polygons cgal_polygons, polygons;
+    const bool cgal_read = CGAL::IO::read_polygon_soup(file, cgal_points, cgal_polygons, CGAL::parameters::verbose(false));
+    SMP_CHECK(smp_tools::internal::read_plain_off(file, points, polygons) == plain,
+              file << (plain ? " is not" : " is") << " read as a plain OFF file");
+    std::string error;
+    points.clear();
+    polygons.clear();
+    const bool read = smp_tools::read_soup(file, points, polygons, error);
+    SMP_CHECK(!cgal_read || (read && points == cgal_points && polygons == cgal_polygons),
+              file << ": not CGAL's points and polygons (" << error << ")");
+  };
+  for(const auto& entry : fs::directory_iterator(SMP_TEST_DATA_DIR))
+    if(entry.path().extension() == ".off")
+      same_as_cgal(entry.path().string(), true);
+
+  // variants of a small file: each line as given, with "\n" or "\r\n" line ends
+  const std::vector<std::string> plain_lines = {"OFF", "5 3 0", "0 0 0", "1 0 0", "1 1 0", "0 1 0.5",
+                                                "0.5 0.5 1e-3", "3 0 1 4", "3 1 2 4", "4 2 3 0 4"};
+  auto write = [](const std::string& name, const std::vector<std::string>& lines, const char* end) {
+    std::ofstream out(name, std::ios::binary);
+    for(const std::string& l : lines) out << l << end;
+    return name;
+  };
+  same_as_cgal(write("plain_lf.off", plain_lines, "\n"), true);
+  same_as_cgal(write("plain_crlf.off", plain_lines, "\r\n"), true);
+  std::vector<std::string> blank = plain_lines;
+  blank.insert(blank.begin() + 2, "");
+  blank.insert(blank.begin() + 5, " \t");
+  blank.insert(blank.end(), {"", "  "});
+  same_as_cgal(write("plain_blank.off", blank, "\n"), true);
+  std::vector<std::string> no_edges = plain_lines;
+  no_edges[1] = "5 3";
+  same_as_cgal(write("plain_no_edges.off", no_edges, "\n"), true);
+  // files left to CGAL's reader: another keyword, a comment, colours, a sign, an index out of
+  // range, a short face, a short vertex, a line after the last face
+  const std::vector<std::pair<std::size_t, std::string> > others = {
+    {0, "COFF"}, {1, "5 3 0 # counts"}, {2, "0 0 0 0.5 0.5 0.5 1"}, {3, "+1 0 0"}, {7, "3 0 1 4 255 0 0"},
+    {7, "3 0 1 9"}, {9, "4 2 3 0"}, {4, "1 1"}};
+  for(std::size_t k = 0; k < others.size(); ++k) {
+    std::vector<std::string> lines = plain_lines;
+    lines[others[k].first] = others[k].second;
+    same_as_cgal(write("other_" + std::to_string(k) + ".off", lines, "\n"), false);
+  }
+  std::vector<std::string> comment = plain_lines;
+  comment.insert(comment.begin() + 2, "# a comment");
+  same_as_cgal(write("other_comment.off", comment, "\n"), false);
+  std::vector<std::string> trailing = plain_lines;
+  trailing.push_back("3 0 1 2");
+  same_as_cgal(write("other_trailing.off", trailing, "\n"), false);
+}
+
 int main()
 {
+  check_plain_off();
   check_outputs();
   check_errors();
   check_isolated_vertex();
