@@ -292,14 +292,20 @@ inline bool check_before_reading(const std::string& file, std::string& error)
   return false;
 }
 
-// Runs a CGAL reader; an exception becomes false and a message.
-template <typename Read>
-bool guarded(const std::string& file, std::string& error, Read read)
+// The polygons of `file`: a plain OFF file read by read_plain_off(), any other by CGAL's reader
+// once check_before_reading() lets it; an exception becomes false and a message.
+template <typename Point>
+bool read_polygons(const std::string& file, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons, std::string& error)
 {
-  if(!check_before_reading(file, error))
-    return false;
   try {
-    return read();
+    if(read_plain_off(file, points, polygons))
+      return true;
+    points.clear();
+    polygons.clear();
+    if(!check_before_reading(file, error))
+      return false;
+    return CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
   } catch(const std::bad_alloc&) {
     error = "out of memory while reading " + file;
   } catch(const std::exception& e) {
@@ -315,20 +321,7 @@ template <typename Point>
 bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
                std::string& error)
 {
-  bool ok = false;
-  try {
-    ok = internal::read_plain_off(file, points, polygons);
-  } catch(const std::bad_alloc&) {
-    error = "out of memory while reading " + file;
-    return false;
-  }
-  if(!ok) {
-    points.clear();
-    polygons.clear();
-    ok = internal::guarded(file, error, [&] {
-      return CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
-    });
-  }
+  const bool ok = internal::read_polygons(file, points, polygons, error);
   if(ok && !polygons.empty())
     return true;
   if(error.empty())
