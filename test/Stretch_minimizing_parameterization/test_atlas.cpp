@@ -742,6 +742,44 @@ void jittered_grids(int n, std::mt19937& random, SMP::internal::Flat_triangles& 
   saddle.tri = plane.tri;
 }
 
+// A chart's mask from its outline is the mask made triangle by triangle, cell for cell: on
+// jittered grids with triangles taken out (holes, notches, pieces apart), turned, at scales
+// from coarser to finer than the triangles and with pads of 0 to 2 cells (the jitter turns a
+// few triangles clockwise: those charts are rasterized triangle by triangle).
+void chart_mask_outline()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  int counterclockwise = 0; // trials whose charts go by their outline
+  for(int trial = 0; trial < 60; ++trial) {
+    const int n = 4 + trial % 13;
+    I::Flat_triangles plane, saddle;
+    jittered_grids(n, random, plane, saddle);
+    std::vector<I::Vec2> uv;
+    const double a = 6.2831853 * unit(random);
+    for(const I::Vec3& p : plane.xyz) // turned: sides that are not along the grid
+      uv.push_back({std::cos(a) * p[0] - std::sin(a) * p[1] + 2. * n, std::sin(a) * p[0] + std::cos(a) * p[1] + 2. * n});
+    std::vector<I::Triangle> tri;
+    for(const I::Triangle& t : plane.tri)
+      if(unit(random) > (trial % 3 == 0 ? 0. : 0.25))
+        tri.push_back(t);
+    const std::vector<std::array<int, 2> > outline = I::chart_outline(tri);
+    counterclockwise += std::all_of(tri.begin(), tri.end(), [&uv](const I::Triangle& t) {
+      return I::twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]) > 0.;
+    });
+    const double scale = trial % 4 == 0 ? 0.3 + unit(random) : 1. + 9. * unit(random);
+    const long pad = trial % 3;
+    const I::Chart_mask from_outline = I::chart_mask(uv, tri, outline, scale, pad), from_triangles = I::chart_mask(uv, tri, scale, pad);
+    const bool same = from_outline.rows == from_triangles.rows && from_outline.width == from_triangles.width;
+    SMP_CHECK(same, "chart mask from the outline, trial " << trial << " (" << tri.size() << " triangles, scale " << scale
+              << ", pad " << pad << "): " << from_outline.height() << " rows against " << from_triangles.height());
+  }
+  SMP_CHECK(counterclockwise >= 50, "chart masks from the outline: " << counterclockwise << " of 60 trials");
+  SMP_CHECK(I::chart_outline({{0, 1, 2}, {1, 3, 2}}).size() == 4, "chart outline of a square of two triangles");
+  SMP_CHECK(I::chart_outline({{0, 1, 2}, {0, 1, 2}}).size() == 6, "chart outline of a triangle twice");
+}
+
 // The border loop of a disk the way its triangles go round (the inside on the left).
 std::vector<int> inside_left_loop(const SMP::internal::Flat_triangles& disk)
 {
@@ -1475,6 +1513,7 @@ int main(int argc, char** argv)
   packing_frame_first();
   cell_bitmap();
   chart_mask_covers();
+  chart_mask_outline();
   chart_starts();
   conformal_map_minimum();
   boundary_first_map_cases();

@@ -164,7 +164,76 @@ inline void merge_spans(std::vector<Chart_mask::Span>& row)
   row.resize(k);
 }
 
-inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri, double scale, long pad)
+// Widens [x0, x1] by the part of the segment (a, b) in the band r <= y <= r + 1: its ends in
+// the band and its crossings of the band's lines.
+inline void widen_by_band_part(const Vec2& a, const Vec2& b, long r, double& x0, double& x1)
+{
+  for(const Vec2* q : {&a, &b})
+    if((*q)[1] >= double(r) && (*q)[1] <= double(r + 1)) { x0 = (std::min)(x0, (*q)[0]); x1 = (std::max)(x1, (*q)[0]); }
+  for(double y : {double(r), double(r + 1)})
+    if((a[1] - y) * (b[1] - y) < 0.) {
+      const double x = a[0] + (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]);
+      x0 = (std::min)(x0, x); x1 = (std::max)(x1, x);
+    }
+}
+
+// Sets the cells of `cells` that the polygon `p` (a triangle or a segment, `n` corners) cuts:
+// per row of cells, the columns of the polygon's part in that row.
+inline void set_cut_cells(Cell_bitmap& cells, const Vec2* p, int n)
+{
+  double y_low = HUGE_VAL, y_top = -HUGE_VAL;
+  for(int i = 0; i < n; ++i) { y_low = (std::min)(y_low, p[i][1]); y_top = (std::max)(y_top, p[i][1]); }
+  const long r0 = (std::max)(0L, long(std::floor(y_low))), r1 = (std::max)(r0, long(std::floor(y_top)));
+  if(r0 == r1 && y_low >= double(r0)) { // within one band (small on a fine grid): its corners
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL;
+    for(int i = 0; i < n; ++i) { x0 = (std::min)(x0, p[i][0]); x1 = (std::max)(x1, p[i][0]); }
+    const long c0 = (std::max)(0L, long(std::floor(x0)));
+    cells.set(r0, c0, (std::max)(c0, long(std::floor(x1))));
+    return;
+  }
+  for(long r = r0; r <= r1; ++r) {
+    double x0 = HUGE_VAL, x1 = -HUGE_VAL;
+    for(int i = 0; i < n; ++i)
+      widen_by_band_part(p[i], p[(i + 1) % n], r, x0, x1);
+    if(x0 > x1) continue;
+    const long c0 = (std::max)(0L, long(std::floor(x0))), c1 = (std::max)(c0, long(std::floor(x1)));
+    cells.set(r, c0, c1);
+  }
+}
+
+// The outline of a chart: the sides of its triangles (each in its triangle's direction) less
+// the pairs of opposite sides, that is, the sides between two of its triangles. Where every
+// triangle is counterclockwise, the outline's winding number at a point counts the triangles
+// over it.
+inline std::vector<std::array<int, 2> > chart_outline(const std::vector<Triangle>& tri)
+{
+  std::vector<std::array<int, 2> > outline;
+  std::vector<std::array<int, 3> > sides; // (lower vertex, higher vertex, +1 from lower to higher, else -1)
+  sides.reserve(3 * tri.size());
+  for(const Triangle& t : tri)
+    for(int k = 0; k < 3; ++k) {
+      const int a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
+      sides.push_back(a < b ? std::array<int, 3>{a, b, 1} : std::array<int, 3>{b, a, -1});
+    }
+  std::sort(sides.begin(), sides.end());
+  for(std::size_t i = 0; i < sides.size();) {
+    std::size_t j = i;
+    int net = 0;
+    for(; j < sides.size() && sides[j][0] == sides[i][0] && sides[j][1] == sides[i][1]; ++j)
+      net += sides[j][2];
+    for(; net > 0; --net) outline.push_back({sides[i][0], sides[i][1]});
+    for(; net < 0; ++net) outline.push_back({sides[i][1], sides[i][0]});
+    i = j;
+  }
+  return outline;
+}
+
+// The mask of the chart (`uv` times `scale`, its triangles `tri`, gutter cells `pad`), from its
+// `outline` (chart_outline(), or empty) if every triangle is counterclockwise at that scale,
+// else triangle by triangle: the same cells, the outline's in a time that goes with the
+// chart's border and rows rather than with its triangles.
+inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri,
+                             const std::vector<std::array<int, 2> >& outline, double scale, long pad)
 {
   Chart_mask m;
   double x_high = 0., y_high = 0.;
@@ -176,33 +245,48 @@ inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Tria
   // the cells the triangles cut, per row, widened by `pad` all round (shifted by `pad`)
   const long rows = tri.empty() ? 0 : long(std::floor(y_high)) + 1, columns = long(std::floor(x_high)) + 1;
   Cell_bitmap cells(rows + 2 * pad, columns + 2 * pad);
-  for(const Triangle& t : tri) {
-    const Vec2 p[3] = {{uv[std::size_t(t[0])][0] * scale, uv[std::size_t(t[0])][1] * scale},
-                       {uv[std::size_t(t[1])][0] * scale, uv[std::size_t(t[1])][1] * scale},
-                       {uv[std::size_t(t[2])][0] * scale, uv[std::size_t(t[2])][1] * scale}};
-    const double y_low = (std::min)({p[0][1], p[1][1], p[2][1]}), y_top = (std::max)({p[0][1], p[1][1], p[2][1]});
-    const long r0 = (std::max)(0L, long(std::floor(y_low))), r1 = (std::max)(r0, long(std::floor(y_top)));
-    if(r0 == r1 && y_low >= double(r0)) { // within one band (a small triangle on a fine grid): its corners
-      const double x0 = (std::min)({p[0][0], p[1][0], p[2][0]}), x1 = (std::max)({p[0][0], p[1][0], p[2][0]});
-      const long c0 = (std::max)(0L, long(std::floor(x0)));
-      cells.set(r0, c0, (std::max)(c0, long(std::floor(x1))));
-      continue;
+  const auto at = [&uv, scale](int v) { return Vec2{uv[std::size_t(v)][0] * scale, uv[std::size_t(v)][1] * scale}; };
+  const bool counterclockwise = std::all_of(tri.begin(), tri.end(), [&at](const Triangle& t) {
+    return twice_signed_area(at(t[0]), at(t[1]), at(t[2])) > 0.;
+  });
+  if(outline.empty() || !counterclockwise) {
+    for(const Triangle& t : tri) {
+      const Vec2 p[3] = {at(t[0]), at(t[1]), at(t[2])};
+      set_cut_cells(cells, p, 3);
     }
-    for(long r = r0; r <= r1; ++r) {
-      // the triangle cut by the band r <= y <= r + 1: its corners inside and its sides' crossings
-      double x0 = HUGE_VAL, x1 = -HUGE_VAL;
-      for(int i = 0; i < 3; ++i) {
-        const Vec2 &a = p[i], &b = p[(i + 1) % 3];
-        if(a[1] >= double(r) && a[1] <= double(r + 1)) { x0 = (std::min)(x0, a[0]); x1 = (std::max)(x1, a[0]); }
-        for(double y : {double(r), double(r + 1)})
-          if((a[1] - y) * (b[1] - y) < 0.) {
-            const double x = a[0] + (b[0] - a[0]) * (y - a[1]) / (b[1] - a[1]);
-            x0 = (std::min)(x0, x); x1 = (std::max)(x1, x);
-          }
+  } else {
+    // The same cells from the outline alone: those it cuts, and those whose centre the
+    // triangles cover (the outline winds around it). A cell that the triangles cut but the
+    // outline does not is covered all over (the number of triangles over a point changes only
+    // across the outline), its centre too.
+    std::vector<std::pair<long, std::pair<double, int> > > crossings; // (row, (x, +1 upwards / -1))
+    for(const std::array<int, 2>& side : outline) {
+      const Vec2 p[2] = {at(side[0]), at(side[1])};
+      set_cut_cells(cells, p, 2);
+      // the centre lines y = r + 1/2 that the side crosses, a line through an end counted once
+      const long first = (std::max)(0L, long(std::ceil((std::min)(p[0][1], p[1][1]) - 0.5)));
+      const long last = (std::min)(rows - 1, long(std::floor((std::max)(p[0][1], p[1][1]) - 0.5)));
+      for(long r = first; r <= last; ++r) {
+        const double y = double(r) + 0.5;
+        if((p[0][1] <= y) == (p[1][1] <= y)) continue;
+        crossings.push_back({r, {p[0][0] + (p[1][0] - p[0][0]) * (y - p[0][1]) / (p[1][1] - p[0][1]), p[1][1] > p[0][1] ? 1 : -1}});
       }
-      if(x0 > x1) continue;
-      const long c0 = (std::max)(0L, long(std::floor(x0))), c1 = (std::max)(c0, long(std::floor(x1)));
-      cells.set(r, c0, c1);
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for(std::size_t i = 0; i < crossings.size();) {
+      const long r = crossings[i].first;
+      int winding = 0;
+      double from = 0.;
+      for(; i < crossings.size() && crossings[i].first == r; ++i) {
+        const int before = winding;
+        winding += crossings[i].second.second;
+        if(before == 0 && winding != 0) from = crossings[i].second.first;
+        if(before != 0 && winding == 0) { // the cells whose centre c + 1/2 is in [from, x]
+          const long c0 = (std::max)(0L, long(std::ceil(from - 0.5)));
+          const long c1 = (std::min)(columns - 1, long(std::floor(crossings[i].second.first - 0.5)));
+          if(c0 <= c1) cells.set(r, c0, c1);
+        }
+      }
     }
   }
   cells.dilate(2 * pad);
@@ -220,6 +304,12 @@ inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Tria
   std::sort(m.widest.begin(), m.widest.end(), std::greater<std::pair<long, long> >());
   order_tests(m);
   return m;
+}
+
+// The mask of a chart rasterized triangle by triangle.
+inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Triangle>& tri, double scale, long pad)
+{
+  return chart_mask(uv, tri, std::vector<std::array<int, 2> >(), scale, pad);
 }
 
 // The widest span of the widest row of `m`.
@@ -462,6 +552,7 @@ struct Packing_input
   std::vector<std::array<std::vector<Vec2>, 4> > turned_uv;
   std::vector<Vec2> extent;       // of each chart not turned (turned by a quarter: the other way round)
   const std::vector<std::vector<Triangle> >* tri = nullptr;
+  std::vector<std::vector<std::array<int, 2> > > outline; // of each chart (chart_outline())
   std::vector<double> area;       // uv area at that density
   double charts_area = 0., longest = 0., total_3d = 0.;
 };
@@ -490,6 +581,7 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
   in.area.resize(n);
   in.turned_uv.resize(n);
   in.extent.resize(n);
+  in.outline.resize(n);
   std::vector<double> length(n);
   parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
     // a chart without surface area gets the size of a small one
@@ -505,6 +597,7 @@ inline Packing_input prepare_packing(std::vector<std::vector<Vec2> >& uv, const 
     length[c] = extent[0];
     for(int k = 0; k < 4; ++k)
       in.turned_uv[c][std::size_t(k)] = turned_chart(uv[c], extent, k);
+    in.outline[c] = chart_outline(tri[c]);
     in.area[c] = s * s * area_uv[c];
   });
   for(std::size_t c = 0; c < n; ++c) { // in order: the sums do not depend on the threads
@@ -566,7 +659,7 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
     std::vector<std::array<Chart_mask, 4> > masks(n);
     parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
       for(std::size_t k = 0; k < 2; ++k) {
-        masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], at, pad);
+        masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], in.outline[c], at, pad);
         masks[c][k + 2] = half_turned(masks[c][k]);
       }
     });
@@ -682,7 +775,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0); best.shift.assign(n, Vec2{0., 0.});
     long row = 0, widest = 0;
     for(std::size_t c = 0; c < n; ++c) {
-      const Chart_mask m = chart_mask(uv[c], tri[c], best.scale, pad);
+      const Chart_mask m = chart_mask(uv[c], tri[c], in.outline[c], best.scale, pad);
       best.y[c] = row;
       row += m.height();
       widest = (std::max)(widest, m.width);
