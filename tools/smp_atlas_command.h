@@ -36,7 +36,8 @@ int run_atlas(const Options& o)
   };
   namespace P = SMP::parameters;
   const SMP::Atlas atlas = SMP::make_atlas(points, polygons,
-      P::max_stretch(o.max_stretch, P::resolution(unsigned(o.resolution), P::gutter(o.gutter)).visitor(progress)));
+      P::max_stretch(o.max_stretch, P::resolution(unsigned(o.resolution), P::gutter(o.gutter)).visitor(progress))
+          .number_of_threads(unsigned(o.threads)));
   const SMP::Atlas_report& r = atlas.report;
   if(r.status != SMP::OK)
     die("no atlas of " + o.input + ": " + SMP::error_message(r.status) + ": " + r.message);

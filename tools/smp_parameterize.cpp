@@ -109,7 +109,7 @@ Options parse(int argc, char** argv)
     ("polish", po::value(&o.polish)->value_name("N"), "then at most N Newton steps on Sander's stretch energy (flip-free)")
     ("polish-time", po::value(&o.polish_time)->value_name("S"), "time budget of the polish in seconds")
     ("free-border", po::bool_switch(&o.free_border), "let the polish move the border (never crossing itself)")
-    ("threads", po::value(&o.threads)->value_name("N"), "threads of u0/u1/uopt on large meshes (default 0: one per core)")
+    ("threads", po::value(&o.threads)->value_name("N"), "threads of u0/u1/uopt on large meshes, and of the atlas (default 0: one per core)")
     ("cut", po::bool_switch(&o.cut), "open a closed genus-0 mesh along a seam first")
     ("charts", po::bool_switch(&o.charts), "parameterize each connected component into its own chart")
     ("atlas", po::bool_switch(&o.atlas),

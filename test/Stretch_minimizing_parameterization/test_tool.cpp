@@ -26,6 +26,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -366,6 +367,18 @@ void check_atlas()
               json.get<unsigned>("atlas.flipped_faces") == 0 && json.get<double>("atlas.l2_stretch") <= 1.05 &&
               json.get<double>("atlas.utilization") > 0., mesh << ": report.json");
     SMP_CHECK(!fs::exists(dir + "/report.json.part"), "no temporary file left");
+  }
+  // --threads reaches the atlas, whose result does not depend on it
+  {
+    const std::string bear = smp_test::data_file("bear.off");
+    const Result r = run(bear + " --atlas -q --no-pictures --threads 1 -o out_atlas_bear_1");
+    SMP_CHECK(r.status == 0, "atlas on one thread: " << r.err);
+    auto bytes = [](const std::string& file) {
+      std::ifstream in(file, std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const std::string one = bytes("out_atlas_bear_1/bear.obj");
+    SMP_CHECK(!one.empty() && one == bytes("out_atlas_bear/bear.obj"), "atlas on one thread: another OBJ");
   }
   // the pictures of an atlas: the uv layout by stretch and by chart too
   const Result r = run("atlas_mix.off --atlas -q --size 120 -o out_atlas_pictures");
