@@ -26,7 +26,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -44,6 +43,15 @@ struct Result
   std::string out, err;
 };
 
+// The bytes of `file` (none if it cannot be read).
+std::string file_text(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 // Runs `tool` (smp-parameterize by default) with `args`, capturing its output.
 Result run(const std::string& args, const std::string& tool = SMP_TOOL)
 {
@@ -51,12 +59,8 @@ Result run(const std::string& args, const std::string& tool = SMP_TOOL)
   const int raw = std::system((tool + " " + args + " > " + out + " 2> " + err).c_str());
   Result r;
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream o(out), e(err);
-  std::stringstream so, se;
-  so << o.rdbuf();
-  se << e.rdbuf();
-  r.out = so.str();
-  r.err = se.str();
+  r.out = file_text(out);
+  r.err = file_text(err);
   return r;
 }
 
@@ -373,12 +377,8 @@ void check_atlas()
     const std::string bear = smp_test::data_file("bear.off");
     const Result r = run(bear + " --atlas -q --no-pictures --threads 1 -o out_atlas_bear_1");
     SMP_CHECK(r.status == 0, "atlas on one thread: " << r.err);
-    auto bytes = [](const std::string& file) {
-      std::ifstream in(file, std::ios::binary);
-      return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    };
-    const std::string one = bytes("out_atlas_bear_1/bear.obj");
-    SMP_CHECK(!one.empty() && one == bytes("out_atlas_bear/bear.obj"), "atlas on one thread: another OBJ");
+    const std::string one = file_text("out_atlas_bear_1/bear.obj");
+    SMP_CHECK(!one.empty() && one == file_text("out_atlas_bear/bear.obj"), "atlas on one thread: another OBJ");
   }
   // the pictures of an atlas: the uv layout by stretch and by chart too
   const Result r = run("atlas_mix.off --atlas -q --size 120 -o out_atlas_pictures");
@@ -399,13 +399,11 @@ void check_remesh()
   SMP_CHECK(CGAL::IO::read_polygon_mesh("out_remesh/nefertiti.off", m) && m.is_valid(false) && CGAL::is_triangle_mesh(m) &&
             m.number_of_vertices() >= 1470 && m.number_of_vertices() <= 1530,
             "smp-remesh: the new mesh has " << m.number_of_vertices() << " vertices for 1500");
-  std::ifstream report("out_remesh/nefertiti.json");
-  std::stringstream text;
-  text << report.rdbuf();
-  SMP_CHECK(text.str().find("\"vertices\": " + std::to_string(m.number_of_vertices())) != std::string::npos &&
-            text.str().find("\"hausdorff_distance\"") != std::string::npos &&
-            text.str().find("\"wrong_faces\": 0") != std::string::npos,
-            "smp-remesh: the report is not the mesh's: " << text.str().substr(0, 300));
+  const std::string report = file_text("out_remesh/nefertiti.json");
+  SMP_CHECK(report.find("\"vertices\": " + std::to_string(m.number_of_vertices())) != std::string::npos &&
+            report.find("\"hausdorff_distance\"") != std::string::npos &&
+            report.find("\"wrong_faces\": 0") != std::string::npos,
+            "smp-remesh: the report is not the mesh's: " << report.substr(0, 300));
   SMP_CHECK(run(nefertiti + " -n 800 --pair u0 -q -o out_remesh/nefertiti_u0.obj --report out_remesh/u0.json",
                 SMP_REMESH_TOOL).status == 0 && fs::exists("out_remesh/nefertiti_u0.obj") && fs::exists("out_remesh/u0.json"),
             "smp-remesh: an OBJ with its report elsewhere");

@@ -246,10 +246,10 @@ inline Chart_mask chart_mask(const std::vector<Vec2>& uv, const std::vector<Tria
   const long rows = tri.empty() ? 0 : long(std::floor(y_high)) + 1, columns = long(std::floor(x_high)) + 1;
   Cell_bitmap cells(rows + 2 * pad, columns + 2 * pad);
   const auto at = [&uv, scale](int v) { return Vec2{uv[std::size_t(v)][0] * scale, uv[std::size_t(v)][1] * scale}; };
-  const bool counterclockwise = std::all_of(tri.begin(), tri.end(), [&at](const Triangle& t) {
+  const bool by_outline = !outline.empty() && std::all_of(tri.begin(), tri.end(), [&at](const Triangle& t) {
     return twice_signed_area(at(t[0]), at(t[1]), at(t[2])) > 0.;
   });
-  if(outline.empty() || !counterclockwise) {
+  if(!by_outline) {
     for(const Triangle& t : tri) {
       const Vec2 p[3] = {at(t[0]), at(t[1]), at(t[2])};
       set_cut_cells(cells, p, 3);
