@@ -33,6 +33,8 @@
 #include <string>
 #include <vector>
 
+namespace test_atlas {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 typedef CGAL::Simple_cartesian<double>::Point_3 Point;
 typedef std::vector<std::size_t> Polygon;
@@ -1493,7 +1495,7 @@ void packing_search()
   }
 }
 
-int main(int argc, char** argv)
+int run_test(int argc, char** argv)
 {
   if(argc > 1) { // a mesh given on the command line
     for(int i = 1; i < argc; ++i) {
@@ -1565,3 +1567,5 @@ int main(int argc, char** argv)
       run(read(mesh.name), 1.05);
   return smp_test::summary();
 }
+
+} // namespace test_atlas

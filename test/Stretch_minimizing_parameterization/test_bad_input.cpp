@@ -31,6 +31,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_bad_input {
+
 using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -818,7 +820,7 @@ void test_reuse()
 
 } // namespace
 
-int main()
+int run_test(int, char**)
 {
   test_empty_mesh();
   test_closed_mesh();
@@ -837,3 +839,5 @@ int main()
   test_reuse();
   return smp_test::summary();
 }
+
+} // namespace test_bad_input

@@ -37,6 +37,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_mesh_types {
+
 typedef CGAL::Simple_cartesian<double>                       Kernel;
 typedef Kernel::Point_2                                      Point_2;
 typedef Kernel::Point_3                                      Point_3;
@@ -406,7 +408,7 @@ void test_components()
 
 } // namespace
 
-int main()
+int run_test(int, char**)
 {
   test_surface_mesh_and_polyhedron();
   test_seam_mesh();
@@ -414,3 +416,5 @@ int main()
   test_components();
   return smp_test::summary();
 }
+
+} // namespace test_mesh_types

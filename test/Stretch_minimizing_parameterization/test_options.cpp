@@ -24,6 +24,8 @@
 #include <string>
 #include <vector>
 
+namespace test_options {
+
 using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -412,7 +414,7 @@ void check_polish(const std::string& name)
   }
 }
 
-int main()
+int run_test(int, char**)
 {
   check_ring_weights();
   check_stopping_rule();
@@ -456,3 +458,5 @@ int main()
   }
   return smp_test::summary();
 }
+
+} // namespace test_options

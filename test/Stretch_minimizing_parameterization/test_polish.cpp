@@ -28,6 +28,8 @@
 #include <string>
 #include <vector>
 
+namespace test_polish {
+
 using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -486,7 +488,7 @@ void test_supernodal_newton()
   }
 }
 
-int main()
+int run_test(int, char**)
 {
   if(!smp_test::sanitized)
     test_mesh("mannequin-devil.off", 1.316, 1.38);
@@ -501,3 +503,5 @@ int main()
   test_supernodal_newton();
   return smp_test::summary();
 }
+
+} // namespace test_polish

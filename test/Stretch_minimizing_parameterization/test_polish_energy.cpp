@@ -15,6 +15,8 @@
 #include <random>
 #include <vector>
 
+namespace test_polish_energy {
+
 // A planar grid of (k+1) x (k+1) vertices on [0,1]^2 in the plane z = 0, interior vertices
 // jittered by `jitter` cells; border loop counter-clockwise.
 struct Flat_grid
@@ -316,7 +318,7 @@ void test_free_border_strip()
   SMP_CHECK(rf.status == SI::Sander_polish_status::OK, "the crossing spiral with a fixed border: " << rf.message);
 }
 
-int main()
+int run_test(int, char**)
 {
   test_face_derivatives();
   test_isometric_fixed_point();
@@ -324,3 +326,5 @@ int main()
   test_free_border_strip();
   return smp_test::summary();
 }
+
+} // namespace test_polish_energy

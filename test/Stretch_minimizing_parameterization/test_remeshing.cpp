@@ -27,6 +27,8 @@
 #include <string>
 #include <vector>
 
+namespace test_remeshing {
+
 namespace SMP = CGAL::Surface_mesh_parameterization;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using smp_test::Mesh;
@@ -254,10 +256,12 @@ void bad_input()
   expect(closed, 100, SMP::ERROR_NO_TOPOLOGICAL_DISC, "a closed mesh");
 }
 
-int main()
+int run_test(int, char**)
 {
   analytic_cases();
   bundled_meshes();
   bad_input();
   return smp_test::summary();
 }
+
+} // namespace test_remeshing

@@ -19,6 +19,8 @@
 #include <random>
 #include <vector>
 
+namespace test_shape_preserving_and_measures {
+
 using namespace smp_test;
 
 namespace SMP = CGAL::Surface_mesh_parameterization;
@@ -314,7 +316,7 @@ void check_folded_border(std::mt19937& rng)
   SMP_CHECK(written == 0, "folded border: " << written << " interior vertices written");
 }
 
-int main()
+int run_test(int, char**)
 {
   std::mt19937 rng(20261122);
   check_ring_weights(rng);
@@ -324,3 +326,5 @@ int main()
   check_mesh_statistics();
   return smp_test::summary();
 }
+
+} // namespace test_shape_preserving_and_measures

@@ -39,6 +39,8 @@
 #include <typeinfo>
 #include <vector>
 
+namespace test_stretch_minimizing {
+
 using namespace smp_test;
 namespace SMP = CGAL::Surface_mesh_parameterization;
 
@@ -866,7 +868,7 @@ void check_readme_tables()
   SMP_CHECK(rows.size() >= 4, "README borders table: " << rows.size() << " rows");
 }
 
-int main()
+int run_test(int, char**)
 {
   for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
                           "mushroom.off", "mannequin-devil.off"}) {
@@ -894,3 +896,5 @@ int main()
 #endif
   return smp_test::summary();
 }
+
+} // namespace test_stretch_minimizing
