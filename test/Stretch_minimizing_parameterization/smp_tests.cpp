@@ -4,21 +4,12 @@
 // The tests in one executable, `smp_tests NAME [ARGUMENTS]` running the test NAME (CTest runs
 // each on its own). Each test file keeps its code in a namespace of its name, so that CMake can
 // compile the files of a group as one translation unit (CMakeLists.txt): the package's templates
-// are then instantiated once per group instead of once per test, which halves the compile time.
+// are then instantiated once per group instead of once per test.
 
 #include <cstring>
 #include <iostream>
 
-#define SMP_TESTS(X)                                                                             \
-  X(test_shape_preserving_and_measures)                                                          \
-  X(test_stretch_minimizing)                                                                     \
-  X(test_bad_input)                                                                              \
-  X(test_mesh_types)                                                                             \
-  X(test_polish)                                                                                 \
-  X(test_polish_energy)                                                                          \
-  X(test_options)                                                                                \
-  X(test_atlas)                                                                                  \
-  X(test_remeshing)
+#include "smp_test_list.h" // SMP_TESTS(X): X(name) for each test, made by CMakeLists.txt
 
 #define SMP_DECLARE_TEST(name) namespace name { int run_test(int argc, char** argv); }
 SMP_TESTS(SMP_DECLARE_TEST)
