@@ -834,6 +834,80 @@ void boundary_first_map_cases()
   SMP_CHECK(!I::boundary_first_map(plane.xyz, plane.tri, twice, uv), "boundary-first map: a loop through a vertex twice not refused");
 }
 
+// `m` without the triangles whose corners all lie in the quarter i, j >= n / 2 of an n x n grid
+// (jittered_grids()' numbering): an L, whose border turns inwards at one corner; the vertices
+// left without a triangle are dropped.
+SMP::internal::Flat_triangles l_shape(const SMP::internal::Flat_triangles& m, int n)
+{
+  namespace I = SMP::internal;
+  const auto in_quarter = [n](int v) { return v % n >= n / 2 && v / n >= n / 2; };
+  I::Flat_triangles l;
+  std::vector<int> index(m.xyz.size(), -1);
+  for(const I::Triangle& t : m.tri) {
+    if(in_quarter(t[0]) && in_quarter(t[1]) && in_quarter(t[2]))
+      continue;
+    I::Triangle kept;
+    for(int k = 0; k < 3; ++k) {
+      int& i = index[std::size_t(t[std::size_t(k)])];
+      if(i < 0) {
+        i = int(l.xyz.size());
+        l.xyz.push_back(m.xyz[std::size_t(t[std::size_t(k)])]);
+      }
+      kept[std::size_t(k)] = i;
+    }
+    l.tri.push_back(kept);
+  }
+  return l;
+}
+
+// The boundary-first border made convex, on an L-shaped plane and saddle (the conformal border
+// turns inwards at the L's inner corner): a closed polygon that turns left at every vertex, one
+// full turn in all (strictly convex); and the start of a chart from it
+// (flatten_by_stretch_minimization(): U^0 inside it, then the free-border steps) a bijection,
+// which on the plane the steps take back to the isometry that the convex border is not.
+void convex_boundary_first_border()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(5);
+  I::Flat_triangles plane, saddle;
+  const int n = 12;
+  jittered_grids(n, random, plane, saddle);
+  for(const I::Flat_triangles* m : {&plane, &saddle}) {
+    const I::Flat_triangles l = l_shape(*m, n);
+    const std::string name = m == &plane ? "L-shaped plane" : "L-shaped saddle";
+    const std::vector<int> loop = inside_left_loop(l);
+    std::vector<I::Vec2> uv;
+    SMP_CHECK(I::boundary_first_map(l.xyz, l.tri, loop, uv), name << ": boundary-first map not solved");
+    const I::Flat_stretch_summary conformal = I::Flat_stretch().evaluate(l, uv);
+    SMP_CHECK(I::boundary_first_map(l.xyz, l.tri, loop, uv, true), name << ": convex border not closed");
+    double turning = 0.;
+    bool left = true;
+    const std::size_t b = loop.size();
+    for(std::size_t k = 0; k < b; ++k) {
+      const I::Vec2 &p = uv[std::size_t(loop[(k + b - 1) % b])], &q = uv[std::size_t(loop[k])],
+                    &r = uv[std::size_t(loop[(k + 1) % b])];
+      const double ax = q[0] - p[0], ay = q[1] - p[1], bx = r[0] - q[0], by = r[1] - q[1];
+      left = left && ax * by - ay * bx > 0.;
+      turning += std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+    }
+    SMP_CHECK(left && std::abs(turning - 2. * 3.14159265358979323846) < 1e-9,
+              name << ": convex border turns left everywhere " << left << ", " << turning << " radians in all");
+
+    I::Chart_mesh sm;
+    SMP_CHECK(I::make_chart_mesh(l, sm), name << ": no surface");
+    I::Chart_parameterization_settings settings;
+    settings.max_stretch = 1.05;
+    SMP_CHECK(I::flatten_by_stretch_minimization(sm, CGAL::Polygon_mesh_processing::longest_border(sm).first, l,
+                                                 settings, uv),
+              name << ": the start from the convex border failed");
+    const I::Flat_stretch_summary s = I::Flat_stretch().evaluate(l, uv);
+    SMP_CHECK(s.flipped == 0 && s.degenerate_uv == 0, name << ": " << s.flipped << " flipped, " << s.degenerate_uv << " flat");
+    if(m == &plane)
+      SMP_CHECK(s.l2 < 1.001 && std::abs(conformal.l2 - 1.) < 1e-9,
+                name << ": L2 " << s.l2 << " from the convex border (the conformal map's " << conformal.l2 << ")");
+  }
+}
+
 // The conformal map (the Dirichlet energies of u and v less the uv area) checked against the
 // conformal energy of each triangle from its Jacobian J: A ((J00 - J11)^2 + (J01 + J10)^2) / 2,
 // zero for a similarity only. On a plane (uneven triangles) the map is a similarity: no
@@ -1519,6 +1593,7 @@ int run_test(int argc, char** argv)
   chart_starts();
   conformal_map_minimum();
   boundary_first_map_cases();
+  convex_boundary_first_border();
   interior_fold_repair();
   holes_without_seams();
   cone_slits();

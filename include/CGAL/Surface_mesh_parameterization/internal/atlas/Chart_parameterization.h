@@ -8,10 +8,10 @@
 // per chart vertex), then Sander's stretch lowered with a free border (flip-free, the border
 // never crossing itself) from one of two starts: a conformal map (the boundary-first map, else
 // LSCM's: Conformal_map.h) where it is a bijection (it is cheap, and often much closer to the
-// least stretch), else this package's stretch-minimizing iteration from a fixed circular border. A chart that closed
-// around a hole is first flattened with the hole kept (the conformal map with the hole filled
-// by guard triangles), without the seam to it. A
-// chart of one triangle is laid out isometrically.
+// least stretch), else this package's U^0 inside the boundary-first border made convex. A chart
+// that closed around a hole is first flattened with the hole kept (the conformal map with the
+// hole filled by guard triangles), without the seam to it. A chart of one triangle is laid out
+// isometrically.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -42,6 +42,7 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -71,6 +72,9 @@ struct Chart_map
 struct Chart_parameterization_settings
 {
   unsigned int polish_iterations = 10;   // free-border Newton steps
+  // descent steps along the proxy, with a free border, from the start of a chart whose conformal
+  // maps are no bijection (see flatten_by_stretch_minimization())
+  unsigned int descent_iterations = 5;
   // the Newton steps of a map that is within `max_stretch` end at a step that lowers the
   // energy by less than this, relatively: coarser than the polisher's own tolerance, as each of
   // the last steps costs a factorization for a gain far below the bound
@@ -210,6 +214,34 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
   return uv;
 }
 
+// Polishes the flip-free map `uv` of a chart (faces `flat`, then the `guard` faces, which keep
+// their place without counting in the stretch) by free-border Newton steps, the border loop
+// `border` kept simple, until polish_goes_on() ends them; false if the polisher refuses the
+// start (a flipped or flat face, or a border that is not simple), `uv` then unchanged.
+inline bool polish_free_border(const Flat_triangles& flat, const std::vector<Triangle>& guard,
+                               const std::vector<int>& border, const Chart_parameterization_settings& settings,
+                               std::vector<Vec2>& uv)
+{
+  Sander_polish_settings ps;
+  // Split Newton steps (u and v apart, an eighth of the flops to factor): from a map within
+  // the bound as from one above it, in the steps allowed, they come within the bound about as
+  // often as the coupled steps, in less time.
+  ps.direction = Sander_polish_direction::SPLIT_NEWTON;
+  ps.free_border = true;
+  ps.threads = settings.threads;
+  ps.supernodal_blas = false; // charts are flattened on several threads at once
+  ps.max_iterations = settings.polish_iterations;
+  double energy = HUGE_VAL;
+  const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
+    const double before = energy;
+    energy = step.energy;
+    return polish_goes_on(before, step.energy, step.l2_stretch, unsigned(step.iteration), settings);
+  };
+  Sander_energy_polisher<> polisher;
+  return polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
+         Sander_polish_status::OK;
+}
+
 // A conformal map of the chart (the boundary-first map, else LSCM's: see below) polished by
 // free-border Newton steps, if the chart is a disk and that map is a bijection (every face of
 // positive area, the border loop simple: then no two triangles overlap, and the polish keeps it
@@ -249,33 +281,50 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
     const double l2 = Flat_stretch().evaluate(flat, uv).l2;
     if(boundary_first && !(l2 <= settings.boundary_first_limit))
       continue;
-    // the polisher refuses a start with a flipped or flat face, or a border that is not simple
-    Sander_polish_settings ps;
-    // Split Newton steps (u and v apart, an eighth of the flops to factor): from a map within
-    // the bound as from one above it, in the steps allowed, they come within the bound about as
-    // often as the coupled steps, in less time.
-    ps.direction = Sander_polish_direction::SPLIT_NEWTON;
-    ps.free_border = true;
-    ps.threads = settings.threads;
-    ps.supernodal_blas = false; // charts are flattened on several threads at once
-    ps.max_iterations = settings.polish_iterations;
-    double energy = HUGE_VAL;
-    const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
-      const double before = energy;
-      energy = step.energy;
-      return polish_goes_on(before, step.energy, step.l2_stretch, unsigned(step.iteration), settings);
-    };
-    Sander_energy_polisher<> polisher;
-    if(polisher.polish(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps, enough).status ==
-       Sander_polish_status::OK)
+    if(polish_free_border(flat, guard, border, settings, uv))
       return true;
   }
   return false;
 }
 
-// The stretch-minimizing parameterizer (LOWEST_STRETCH from a circular border, then the polish
-// with a free border); false if it fails or flattens only part of the chart.
-inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd,
+// A border parameterizer (CGAL's concept) that puts the border vertices where `uv` says (indexed
+// by vertex: vertex i of a Chart_mesh is vertex i of the chart).
+class Given_border_parameterizer
+{
+public:
+  typedef Chart_mesh Triangle_mesh;
+  explicit Given_border_parameterizer(const std::vector<Vec2>* uv = nullptr) : m_uv(uv) {}
+
+  template <typename VertexUVMap, typename VertexIndexMap, typename VertexParameterizedMap>
+  Error_code parameterize(const Chart_mesh& mesh, Chart_halfedge bhd, VertexUVMap uvmap, VertexIndexMap,
+                          VertexParameterizedMap vpmap)
+  {
+    if(m_uv == nullptr)
+      return ERROR_BORDER_TOO_SHORT;
+    for(Chart_halfedge h : halfedges_around_face(bhd, mesh)) {
+      const Vec2& q = (*m_uv)[std::size_t(target(h, mesh))];
+      put(uvmap, target(h, mesh), Chart_kernel::Point_2(q[0], q[1]));
+      put(vpmap, target(h, mesh), true);
+    }
+    return OK;
+  }
+
+  bool is_border_convex() const { return true; }
+
+private:
+  const std::vector<Vec2>* m_uv;
+};
+
+// A chart whose conformal maps are no bijection, flattened from this package's U^0 (clamped
+// cotangent weights, positive) inside the boundary-first border made convex, on which any
+// positive weights give a bijection: the conformal border where it turns outwards, straight
+// where it turns inwards (else, if that border cannot be closed, inside a circle); then the
+// descent steps along the proxy with a free border, and the free-border polish of
+// polish_free_border(), as after a conformal start. No reweighting step: they lower the
+// stretch under a border that the next steps move anyway, a factorization each (measured on the
+// meshes of the comparison with xatlas: benchmark/results/atlas_convex_start.md). False if it
+// fails or flattens only part of the chart.
+inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd, const Flat_triangles& flat,
                                             const Chart_parameterization_settings& settings, std::vector<Vec2>& uv)
 {
   auto uvmap = sm.add_property_map<Chart_vertex, Chart_kernel::Point_2>("v:uv").first;
@@ -283,33 +332,38 @@ inline bool flatten_by_stretch_minimization(Chart_mesh& sm, Chart_halfedge bhd,
   auto vpmap = sm.add_property_map<Chart_vertex, bool>("v:done", false).first;
   for(Chart_vertex v : vertices(sm))
     put(vimap, v, int(v));
-  namespace P = parameters;
+  std::vector<int> border; // the border halfedges' targets, as the polish takes them
+  for(Chart_halfedge h : halfedges_around_face(bhd, sm))
+    border.push_back(int(target(h, sm)));
+  const std::vector<int> inside_left(border.rbegin(), border.rend());
+
   // Eigen's LU: charts are small, and flattened on several threads at once, where
   // SuiteSparse's solvers (through a multithreaded BLAS) made results vary from run to run
   typedef CGAL::Eigen_solver_traits<Eigen::SparseLU<Eigen_sparse_matrix<double>::EigenType, Eigen::COLAMDOrdering<int> > > Solver;
-  // a strictly convex border: three border vertices in a row (an ear of the chart's jagged
-  // border) would make a flat triangle on a side of a square
-  typedef Shape_preserving_parameterizer_3<Chart_mesh, Circular_border_arc_length_parameterizer_3<Chart_mesh>, Solver> Initial;
-  // the Newton steps end as those from the conformal map do (the energy goes as the square of
-  // the L2 stretch)
-  double last_l2 = HUGE_VAL;
-  unsigned int newton_steps = 0;
-  const std::function<bool(const Stretch_minimizing_step&)> enough = [&](const Stretch_minimizing_step& step) {
-    const double before = last_l2, l2 = step.l2_stretch;
-    last_l2 = l2;
-    if(!step.polish || step.descent)
-      return true;
-    return polish_goes_on(before * before, l2 * l2, l2, ++newton_steps, settings);
+  const auto start = [&](const auto& initializer) {
+    typedef typename std::decay<decltype(initializer)>::type Initial;
+    namespace P = parameters;
+    Stretch_minimizing_parameterizer_3<Chart_mesh, Initial, Solver> p(initializer,
+      P::preset(Stretch_minimizing_preset::LOWEST_STRETCH).number_of_iterations(0u)
+        .descent_iterations(settings.descent_iterations).free_border(true).number_of_threads(1u));
+    return p.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
   };
-  Stretch_minimizing_parameterizer_3<Chart_mesh, Initial, Solver> p(P::preset(Stretch_minimizing_preset::LOWEST_STRETCH)
-      .polish_iterations(settings.polish_iterations).free_border(true).number_of_threads(1u).visitor(enough));
-  bool ok = p.parameterize(sm, bhd, uvmap, vimap, vpmap) == OK;
+  std::vector<Vec2> convex;
+  bool ok = boundary_first_map(flat.xyz, flat.tri, inside_left, convex, true) &&
+            start(Shape_preserving_parameterizer_3<Chart_mesh, Given_border_parameterizer, Solver>(
+              Given_border_parameterizer(&convex)));
+  // a strictly convex circle: three border vertices in a row (an ear of the chart's jagged
+  // border) would make a flat triangle on a side of a square
+  if(!ok)
+    ok = start(Shape_preserving_parameterizer_3<Chart_mesh, Circular_border_arc_length_parameterizer_3<Chart_mesh>, Solver>());
   // only the piece of `bhd` is flattened: a chart of pieces that touch at a repeated
   // position only (not at a chart vertex) is split like a failed one
   for(Chart_vertex v : vertices(sm))
     ok = ok && get(vpmap, v);
-  if(ok)
+  if(ok) {
     uv = read_uv(sm, uvmap);
+    polish_free_border(flat, std::vector<Triangle>(), border, settings, uv); // uv unchanged if refused
+  }
   sm.remove_property_map(uvmap);
   sm.remove_property_map(vimap);
   sm.remove_property_map(vpmap);
@@ -544,7 +598,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     keep();
   }
   chart.ok = false;
-  if(minimize && flatten_by_stretch_minimization(sm, bhd, settings, chart.uv)) {
+  if(minimize && flatten_by_stretch_minimization(sm, bhd, chart.flat, settings, chart.uv)) {
     measure_chart(chart);
     keep();
   }

@@ -196,10 +196,14 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
 // little as closes it, and the inside is the harmonic extension of that border. One scalar
 // factorization for the three solves, where LSCM factors a system of twice the rows.
 // `loop`: the border of the disk that the triangles make (its only border), each side from a
-// vertex to the next a side of a triangle (the inside on its left). False if a vertex is twice
-// on it or the system cannot be solved.
+// vertex to the next a side of a triangle (the inside on its left). With `convex`, the border
+// turns one way only: every turn raised to at least a twentieth of the mean turn, all scaled
+// back to a full turn, which makes it a strictly convex polygon near the conformal border (a
+// border on which any positive weights give a bijection, where the conformal one can overlap
+// itself). False if a vertex is twice on it, the system cannot be solved, or (with `convex`)
+// closing the border would take a side's whole length.
 inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<Triangle>& triangles,
-                               const std::vector<int>& loop, std::vector<Vec2>& uv)
+                               const std::vector<int>& loop, std::vector<Vec2>& uv, bool convex = false)
 {
   const std::size_t n = xyz.size();
   if(loop.size() < 3)
@@ -261,6 +265,14 @@ inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<T
     turn[std::size_t(b)] = pi - angle[std::size_t(b)];
   for(const Side_weight& s : to_border)
     turn[std::size_t(s.to)] -= s.c * scale[row[std::size_t(s.from)]];
+  if(convex) {
+    const double least = 0.05 * 2. * pi / double(loop.size());
+    double sum = 0.;
+    for(int b : loop)
+      sum += turn[std::size_t(b)] = (std::max)(turn[std::size_t(b)], least);
+    for(int b : loop)
+      turn[std::size_t(b)] *= 2. * pi / sum;
+  }
   // the border's sides, in turn, then their lengths changed as little as closes it (least
   // squares weighed by 1 / length)
   const std::size_t m = loop.size();
@@ -287,6 +299,8 @@ inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<T
   for(std::size_t i = 0; i < m; ++i) {
     uv[std::size_t(loop[i])] = at;
     const double l = length[i] * (1. - (tangent[i][0] * lambda[0] + tangent[i][1] * lambda[1]));
+    if(convex && !(l > 0.))
+      return false;
     at = {at[0] + l * tangent[i][0], at[1] + l * tangent[i][1]};
   }
   if(rows > 0) {

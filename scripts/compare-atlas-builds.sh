@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Two builds of smp-parameterize side by side on the atlas (a change against the code before it):
+# for every mesh, each tool runs RUNS times in turns (so that both see the same load), and the
+# least atlas time of each (report.json's seconds.atlas) is kept with the atlas's charts, L2
+# stretch, seam share and utilization (deterministic: the same in every run). From the root of
+# the repository:
+#   bash scripts/compare-atlas-builds.sh [-r RUNS] TOOL_BEFORE TOOL_AFTER MESH...
+# TOOL_*: smp-parameterize executables (e.g. build/release/tools/smp-parameterize of two
+# checkouts); RUNS defaults to 3. Writes a markdown table and the totals to standard output.
+set -euo pipefail
+
+runs=3
+if [ "${1:-}" = "-r" ]; then runs="$2"; shift 2; fi
+[ $# -ge 3 ] || { echo "usage: bash scripts/compare-atlas-builds.sh [-r RUNS] TOOL_BEFORE TOOL_AFTER MESH..." >&2; exit 2; }
+before="$(realpath "$1")"
+after="$(realpath "$2")"
+shift 2
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns"
+echo
+echo "| mesh | charts | L2 | seam % | utilization | atlas s (least) |"
+echo "|---|---:|---:|---:|---:|---:|"
+for mesh in "$@"; do
+  for r in $(seq "$runs"); do
+    for tool in before after; do
+      "${!tool}" "$mesh" --atlas --no-pictures -q -o "$work/$tool-$r" >/dev/null 2>&1 ||
+        { echo "$tool failed on $mesh" >&2; exit 1; }
+    done
+  done
+  python3 - "$work" "$runs" "$(basename "$mesh")" <<'PY'
+import json, sys
+work, runs, name = sys.argv[1], int(sys.argv[2]), sys.argv[3]
+def load(tool):
+    reports = [json.load(open(f"{work}/{tool}-{r}/report.json")) for r in range(1, runs + 1)]
+    a = reports[0]["atlas"]
+    return a, min(x["seconds"]["atlas"] for x in reports)
+(a, ta), (b, tb) = load("before"), load("after")
+seam = lambda x: 100 * x["seam_length"] / x["edge_length"] if x["edge_length"] > 0 else 0.
+print(f"| {name} | {a['charts']} / {b['charts']} | {a['l2_stretch']:.4f} / {b['l2_stretch']:.4f} | "
+      f"{seam(a):.2f} / {seam(b):.2f} | {a['utilization']:.3f} / {b['utilization']:.3f} | {ta:.3f} / {tb:.3f} |")
+PY
+done | tee "$work/table.md"
+python3 - "$work/table.md" <<'PY'
+import sys
+rows = [[c.strip() for c in l.strip().strip("|").split("|")] for l in open(sys.argv[1])]
+pair = lambda c: [float(x) for x in c.split("/")]
+t = [pair(r[5]) for r in rows]
+s = [pair(r[3]) for r in rows]
+u = [pair(r[4]) for r in rows]
+n = len(rows)
+print()
+print(f"Totals over {n} meshes (before / after): atlas time {sum(x[0] for x in t):.3f} / {sum(x[1] for x in t):.3f} s "
+      f"({sum(x[1] for x in t) / sum(x[0] for x in t):.3f}); mean seam share {sum(x[0] for x in s) / n:.3f} / "
+      f"{sum(x[1] for x in s) / n:.3f} %; mean utilization {sum(x[0] for x in u) / n:.4f} / {sum(x[1] for x in u) / n:.4f}")
+PY
