@@ -782,6 +782,24 @@ void chart_mask_outline()
   SMP_CHECK(I::chart_outline({{0, 1, 2}, {0, 1, 2}}).size() == 6, "chart outline of a triangle twice");
 }
 
+// sort_by_vertex() gives std::sort's order: random triples with repeated first vertices and
+// equal items, an empty list, one item.
+void vertex_sort()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(3);
+  for(int trial = 0; trial < 20; ++trial) {
+    std::uniform_int_distribution<int> vertex(0, 1 + 5 * trial), other(-3, 3);
+    std::vector<std::array<int, 3> > items(std::size_t(trial * trial));
+    for(std::array<int, 3>& x : items)
+      x = {vertex(random), other(random), other(random)};
+    std::vector<std::array<int, 3> > expected = items;
+    std::sort(expected.begin(), expected.end());
+    I::sort_by_vertex(items, [](const std::array<int, 3>& x) { return x[0]; });
+    SMP_CHECK(items == expected, "sort_by_vertex, trial " << trial << ": not std::sort's order");
+  }
+}
+
 // The border loop of a disk the way its triangles go round (the inside on the left).
 std::vector<int> inside_left_loop(const SMP::internal::Flat_triangles& disk)
 {
@@ -1590,6 +1608,7 @@ int run_test(int argc, char** argv)
   cell_bitmap();
   chart_mask_covers();
   chart_mask_outline();
+  vertex_sort();
   chart_starts();
   conformal_map_minimum();
   boundary_first_map_cases();

@@ -16,6 +16,7 @@
 // depend on their number.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Cell_bitmap.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/sort_by_vertex.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 
@@ -215,7 +216,7 @@ inline std::vector<std::array<int, 2> > chart_outline(const std::vector<Triangle
       const int a = t[std::size_t(k)], b = t[std::size_t((k + 1) % 3)];
       sides.push_back(a < b ? std::array<int, 3>{a, b, 1} : std::array<int, 3>{b, a, -1});
     }
-  std::sort(sides.begin(), sides.end());
+  sort_by_vertex(sides, [](const std::array<int, 3>& s) { return s[0]; });
   for(std::size_t i = 0; i < sides.size();) {
     std::size_t j = i;
     int net = 0;

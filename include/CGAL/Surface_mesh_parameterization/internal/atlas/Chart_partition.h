@@ -8,6 +8,7 @@
 // than halved again and again (each halving flattens all its triangles once more).
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/sort_by_vertex.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
 #include <algorithm>
@@ -107,7 +108,7 @@ inline std::vector<Shared_side> shared_sides(const Flat_triangles& chart)
       const int a = chart.tri[t][std::size_t(k)], b = chart.tri[t][std::size_t((k + 1) % 3)];
       side_key.push_back({(std::min)(a, b), (std::max)(a, b), int(t)});
     }
-  std::sort(side_key.begin(), side_key.end());
+  sort_by_vertex(side_key, [](const std::array<int, 3>& k) { return k[0]; });
   std::vector<Shared_side> shared;
   for(std::size_t i = 0; i + 1 < side_key.size(); ++i)
     if(side_key[i][0] == side_key[i + 1][0] && side_key[i][1] == side_key[i + 1][1])

@@ -16,6 +16,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/sort_by_vertex.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
 #include <Eigen/Sparse>
@@ -160,7 +161,7 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
     }
   }
   // the area of the full-weight triangles: their inner sides cancel, those of one triangle remain
-  std::sort(sides.begin(), sides.end());
+  sort_by_vertex(sides, [](const std::tuple<int, int, int, int>& e) { return std::get<0>(e); });
   for(std::size_t s = 0; s < sides.size();) {
     std::size_t e = s + 1;
     while(e < sides.size() && std::get<0>(sides[e]) == std::get<0>(sides[s]) && std::get<1>(sides[e]) == std::get<1>(sides[s]))
