@@ -257,10 +257,12 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
   if(loops.size() != 1 || euler != 1)
     return false;
-  // a disk and closed pieces can add up to a disk's characteristic: one piece only
-  std::vector<boost::graph_traits<Chart_mesh>::face_descriptor> piece;
-  CGAL::Polygon_mesh_processing::connected_component(face(opposite(bhd, sm), sm), sm, std::back_inserter(piece));
-  if(piece.size() != num_faces(sm))
+  // a disk and closed pieces can add up to a disk's characteristic: one piece only (counted
+  // with a face map: connected_component() of one face keeps a std::set of the faces)
+  auto piece = sm.add_property_map<boost::graph_traits<Chart_mesh>::face_descriptor, std::size_t>("f:piece").first;
+  const std::size_t pieces = CGAL::Polygon_mesh_processing::connected_components(sm, piece);
+  sm.remove_property_map(piece);
+  if(pieces != 1)
     return false;
   std::vector<Triangle> all = flat.tri;
   all.insert(all.end(), guard.begin(), guard.end());
