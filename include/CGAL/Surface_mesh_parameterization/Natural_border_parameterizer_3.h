@@ -6,10 +6,10 @@
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/internal/component_faces.h>
 
 #include <CGAL/Default.h>
 #include <CGAL/Polygon_2.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>
@@ -111,8 +111,7 @@ public:
     auto index = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
     auto free_uv = get(CGAL::dynamic_vertex_property_t<K::Point_2>(), mesh);
     auto free_vp = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
-    std::vector<face_descriptor> cc;
-    Polygon_mesh_processing::connected_component(face(opposite(bhd, mesh), mesh), mesh, std::back_inserter(cc));
+    const std::vector<face_descriptor> cc = internal::component_faces(mesh, face(opposite(bhd, mesh), mesh));
     for(face_descriptor f : cc)
       for(vertex_descriptor v : vertices_around_face(halfedge(f, mesh), mesh))
         put(index, v, -1);

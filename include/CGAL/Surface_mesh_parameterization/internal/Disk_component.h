@@ -5,6 +5,7 @@
 #define CGAL_SMP_INTERNAL_DISK_COMPONENT_H
 
 #include <CGAL/Surface_mesh_parameterization/Error_code.h>
+#include <CGAL/Surface_mesh_parameterization/internal/component_faces.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -75,25 +76,7 @@ public:
     if(!is_border(bhd, tm))
       return fail(ERROR_WRONG_PARAMETER, "the given halfedge is not a border halfedge");
 
-    // the component, by a walk over faces that share an edge (PMP::connected_component keeps
-    // a std::set of faces: a tenth of the time of U^0 on a 13k-vertex mesh)
-    std::vector<face_descriptor> cc_faces;
-    {
-      auto seen = get(CGAL::dynamic_face_property_t<bool>(), tm);
-      for(face_descriptor f : faces(tm))
-        put(seen, f, false);
-      const face_descriptor f0 = face(opposite(bhd, tm), tm);
-      put(seen, f0, true);
-      cc_faces.push_back(f0);
-      for(std::size_t k = 0; k < cc_faces.size(); ++k)
-        for(halfedge_descriptor h : halfedges_around_face(halfedge(cc_faces[k], tm), tm)) {
-          const face_descriptor g = face(opposite(h, tm), tm);
-          if(g != GT::null_face() && !get(seen, g)) {
-            put(seen, g, true);
-            cc_faces.push_back(g);
-          }
-        }
-    }
+    const std::vector<face_descriptor> cc_faces = component_faces(tm, face(opposite(bhd, tm), tm));
 
     auto local = get(CGAL::dynamic_vertex_property_t<int>(), tm); // local index + 1; 0: unseen
     for(face_descriptor f : cc_faces)
