@@ -23,6 +23,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Conformal_map.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Fold_repair.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/triangulate_loop.h>
+#include <CGAL/Surface_mesh_parameterization/internal/component_faces.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/hole_filling_compatibility.h>
 
@@ -30,7 +31,6 @@
 #include <CGAL/Eigen_solver_traits.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/border.h>
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
@@ -257,12 +257,8 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
   const long euler = long(num_vertices(sm)) - long(num_edges(sm)) + long(num_faces(sm));
   if(loops.size() != 1 || euler != 1)
     return false;
-  // a disk and closed pieces can add up to a disk's characteristic: one piece only (counted
-  // with a face map: connected_component() of one face keeps a std::set of the faces)
-  auto piece = sm.add_property_map<boost::graph_traits<Chart_mesh>::face_descriptor, std::size_t>("f:piece").first;
-  const std::size_t pieces = CGAL::Polygon_mesh_processing::connected_components(sm, piece);
-  sm.remove_property_map(piece);
-  if(pieces != 1)
+  // a disk and closed pieces can add up to a disk's characteristic: one piece only
+  if(component_faces(sm, face(opposite(bhd, sm), sm)).size() != num_faces(sm))
     return false;
   std::vector<Triangle> all = flat.tri;
   all.insert(all.end(), guard.begin(), guard.end());
@@ -302,7 +298,7 @@ public:
                           VertexParameterizedMap vpmap)
   {
     if(m_uv == nullptr)
-      return ERROR_BORDER_TOO_SHORT;
+      return ERROR_WRONG_PARAMETER;
     for(Chart_halfedge h : halfedges_around_face(bhd, mesh)) {
       const Vec2& q = (*m_uv)[std::size_t(target(h, mesh))];
       put(uvmap, target(h, mesh), Chart_kernel::Point_2(q[0], q[1]));

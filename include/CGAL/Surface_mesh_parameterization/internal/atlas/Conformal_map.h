@@ -201,8 +201,9 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
 // turns one way only: every turn raised to at least a twentieth of the mean turn, all scaled
 // back to a full turn, which makes it a strictly convex polygon near the conformal border (a
 // border on which any positive weights give a bijection, where the conformal one can overlap
-// itself). False if a vertex is twice on it, the system cannot be solved, or (with `convex`)
-// closing the border would take a side's whole length.
+// itself); only the border is placed then (the inside stays at the origin), for a map of the
+// caller's inside it. False if a vertex is twice on it, the system cannot be solved, or (with
+// `convex`) closing the border would take a side's whole length.
 inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<Triangle>& triangles,
                                const std::vector<int>& loop, std::vector<Vec2>& uv, bool convex = false)
 {
@@ -304,7 +305,7 @@ inline bool boundary_first_map(const std::vector<Vec3>& xyz, const std::vector<T
       return false;
     at = {at[0] + l * tangent[i][0], at[1] + l * tangent[i][1]};
   }
-  if(rows > 0) {
+  if(rows > 0 && !convex) { // a convex border is for a map of the caller's inside it
     Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(rows, 2);
     for(const Side_weight& s : to_border)
       for(int d = 0; d < 2; ++d)
