@@ -339,19 +339,19 @@ public:
   long height() const { return long(rows_.size()); }
 
   // Whether `m` fits with its corner at (x, y); if not, `next_x` receives an x > `x` below
-  // which it does not fit either (the span that collided has to pass the run of cells it met).
-  bool fits(const Chart_mask& m, long x, long y, long& next_x) const
+  // which it does not fit either: the span that collided has to reach a free run of its row
+  // long enough for it (searched up to a corner x of `last`). The row of `m` that collided is
+  // tested first next time (`first_row`, -1: none): what blocks a chart at one x mostly
+  // blocks it a little further on too.
+  bool fits(const Chart_mask& m, long x, long y, long last, long& first_row, long& next_x) const
   {
-    for(const long r : m.test_order) {
-      if(y + r >= height()) continue;
-      for(const Chart_mask::Span& s : m.rows[std::size_t(r)]) {
-        const long met = taken_.first_set(y + r, x + s.first, x + s.second);
-        if(met < x + s.second) {
-          next_x = taken_.run_end(y + r, met) - s.first;
-          return false;
-        }
+    if(first_row >= 0 && collides(m, first_row, x, y, last, next_x))
+      return false;
+    for(const long r : m.test_order)
+      if(r != first_row && collides(m, r, x, y, last, next_x)) {
+        first_row = r;
+        return false;
       }
-    }
     return true;
   }
 
@@ -404,7 +404,7 @@ public:
         room = y + m.widest[i].second >= height() || free_run(y + m.widest[i].second, end) >= m.widest[i].first;
       if(!room) continue;
       const long r = y + wide_row, right = end - m.width; // the last corner x worth trying
-      long gap_begin = 0, x_found = -1;
+      long gap_begin = 0, x_found = -1, first_row = -1;
       const std::size_t spans = r < height() ? rows_[std::size_t(r)].size() : 0;
       for(std::size_t i = 0; i <= spans && x_found < 0; ++i) {
         const long gap_end = i < spans ? rows_[std::size_t(r)][i].first : width_;
@@ -412,7 +412,7 @@ public:
         const long last = (std::min)(gap_end - wide.second, right);
         for(long x = (std::max)(0L, gap_begin - wide.first); x <= last;) {
           long next = x + 1;
-          if(fits(m, x, y, next)) { x_found = x; break; }
+          if(fits(m, x, y, last, first_row, next)) { x_found = x; break; }
           x = (std::max)(next, x + 1);
         }
         if(i < spans) gap_begin = rows_[std::size_t(r)][i].second;
@@ -433,6 +433,27 @@ private:
   std::vector<std::vector<Chart_mask::Span> > rows_;
   Cell_bitmap taken_;
   std::vector<long> inner_run_, row_end_; // per row: longest free run before its last taken cell; that cell's end
+
+  // whether row `r` of `m` meets a taken cell with the chart's corner at (x, y); if so, `next_x`
+  // as in fits()
+  bool collides(const Chart_mask& m, long r, long x, long y, long last, long& next_x) const
+  {
+    if(y + r >= height())
+      return false;
+    for(const Chart_mask::Span& s : m.rows[std::size_t(r)]) {
+      long met = taken_.first_set(y + r, x + s.first, x + s.second);
+      if(met == x + s.second) continue;
+      const long length = s.second - s.first;
+      for(;;) {
+        const long free = taken_.run_end(y + r, met);
+        next_x = free - s.first;
+        if(next_x > last || free + length > width_) return true;
+        met = taken_.first_set(y + r, free, free + length);
+        if(met == free + length) return true;
+      }
+    }
+    return false;
+  }
 
   // the longest free run of `row` left of column `bound`
   long free_run(long row, long bound) const
