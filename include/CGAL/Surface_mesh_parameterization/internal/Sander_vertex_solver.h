@@ -42,9 +42,14 @@ inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& 
 }
 
 // Eigen's simplicial LDL^T, in its own minimum degree order or in an order given by rows
-// (vertex_order.h: one nested-dissection order for all the systems of a mesh).
+// (vertex_order.h: one nested-dissection order for all the systems of a mesh). The factorization
+// of each set of values scatters them into the permuted pattern made by the analysis, where
+// Eigen's own permutes the whole matrix anew (a pass over it, allocations and a sort of its
+// columns) at every factorization.
 class Ordered_ldlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
 {
+  typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Base;
+
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
 
@@ -53,17 +58,55 @@ public:
   {
     if(order.empty()) {
       analyzePattern(lower);
+    } else {
+      const Eigen::Index n = lower.rows();
+      m_P.resize(n);
+      for(Eigen::Index k = 0; k < n; ++k)
+        m_P.indices()[order[std::size_t(k)]] = int(k); // row -> place
+      m_Pinv = m_P.inverse();
+      CholMatrixType permuted(n, n);
+      permuted.selfadjointView<Eigen::Upper>() = lower.selfadjointView<Eigen::Lower>().twistedBy(m_P);
+      analyzePattern_preordered(permuted, true);
+    }
+    make_scatter(lower);
+  }
+
+  // The factorization of `lower`, of the pattern analysed.
+  void factorize(const Matrix& lower)
+  {
+    if(m_source.empty() || !lower.isCompressed() || lower.nonZeros() != m_lower_entries) {
+      Base::factorize(lower); // permuted anew
       return;
     }
-    const Eigen::Index n = lower.rows();
-    m_P.resize(n);
-    for(Eigen::Index k = 0; k < n; ++k)
-      m_P.indices()[order[std::size_t(k)]] = int(k); // row -> place
-    m_Pinv = m_P.inverse();
-    CholMatrixType permuted(n, n);
-    permuted.selfadjointView<Eigen::Upper>() = lower.selfadjointView<Eigen::Lower>().twistedBy(m_P);
-    analyzePattern_preordered(permuted, true);
+    const double* from = lower.valuePtr();
+    double* to = m_permuted.valuePtr();
+    for(std::size_t k = 0; k < m_source.size(); ++k)
+      to[k] = from[m_source[k]];
+    factorize_preordered<true>(m_permuted);
   }
+
+private:
+  // The permuted pattern of `lower`, and where each of its values comes from in `lower`: the
+  // positions of `lower`'s values permuted as values (integers, exact in doubles).
+  void make_scatter(const Matrix& lower)
+  {
+    m_source.clear();
+    m_lower_entries = lower.nonZeros();
+    if(info() != Eigen::Success || !lower.isCompressed())
+      return;
+    Matrix position = lower;
+    for(Eigen::Index k = 0; k < position.nonZeros(); ++k)
+      position.valuePtr()[k] = double(k);
+    m_permuted.resize(lower.rows(), lower.cols());
+    m_permuted.selfadjointView<Eigen::Upper>() = position.selfadjointView<Eigen::Lower>().twistedBy(m_P);
+    m_source.resize(std::size_t(m_permuted.nonZeros()));
+    for(std::size_t k = 0; k < m_source.size(); ++k)
+      m_source[k] = Eigen::Index(m_permuted.valuePtr()[k]);
+  }
+
+  CholMatrixType m_permuted;           // the pattern in elimination order (upper triangle)
+  std::vector<Eigen::Index> m_source;  // per value of m_permuted: its position in `lower`
+  Eigen::Index m_lower_entries = 0;
 };
 
 #if defined(CGAL_SMP_USE_CHOLMOD)
