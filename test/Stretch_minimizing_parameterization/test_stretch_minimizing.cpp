@@ -458,6 +458,24 @@ void check_ordered_solvers()
   ldlt.factorize(lower);
   SMP_CHECK(ldlt.info() == Eigen::Success && (ldlt.solve(b) - x).norm() < 1e-10 * x.norm(),
             "Eigen's LDL^T in a given order solves otherwise");
+  // new values on the pattern analysed (scattered into the permuted pattern of the analysis),
+  // in the given order and in the minimum degree one, and a matrix not compressed (permuted anew)
+  Matrix other = lower;
+  for(int k = 0; k < other.nonZeros(); ++k)
+    other.valuePtr()[k] *= 1. + 0.3 * std::cos(double(k));
+  const Eigen::VectorXd y = Eigen::SimplicialLDLT<Matrix, Eigen::Lower>(other).solve(b);
+  SMP::internal::Ordered_ldlt own;
+  own.analyze(lower, std::vector<int>());
+  for(SMP::internal::Ordered_ldlt* solver : {&ldlt, &own}) {
+    solver->factorize(other);
+    SMP_CHECK(solver->info() == Eigen::Success && (solver->solve(b) - y).norm() < 1e-10 * y.norm(),
+              "Eigen's LDL^T solves otherwise with new values on the pattern analysed");
+    Matrix loose = other;
+    loose.uncompress();
+    solver->factorize(loose);
+    SMP_CHECK(solver->info() == Eigen::Success && (solver->solve(b) - y).norm() < 1e-10 * y.norm(),
+              "Eigen's LDL^T solves otherwise on a matrix not compressed");
+  }
 #if defined(CGAL_SMP_USE_CHOLMOD)
   SMP::internal::Ordered_cholmod llt;
   llt.analyze(lower, order);

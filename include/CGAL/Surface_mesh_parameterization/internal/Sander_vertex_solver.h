@@ -101,11 +101,11 @@ private:
     m_permuted.selfadjointView<Eigen::Upper>() = position.selfadjointView<Eigen::Lower>().twistedBy(m_P);
     m_source.resize(std::size_t(m_permuted.nonZeros()));
     for(std::size_t k = 0; k < m_source.size(); ++k)
-      m_source[k] = Eigen::Index(m_permuted.valuePtr()[k]);
+      m_source[k] = Matrix::StorageIndex(m_permuted.valuePtr()[k]);
   }
 
   CholMatrixType m_permuted;           // the pattern in elimination order (upper triangle)
-  std::vector<Eigen::Index> m_source;  // per value of m_permuted: its position in `lower`
+  std::vector<Matrix::StorageIndex> m_source; // per value of m_permuted: its position in `lower`
   Eigen::Index m_lower_entries = 0;
 };
 
