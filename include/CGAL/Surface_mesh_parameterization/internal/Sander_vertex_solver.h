@@ -44,8 +44,8 @@ inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& 
 // Eigen's simplicial LDL^T, in its own minimum degree order or in an order given by rows
 // (vertex_order.h: one nested-dissection order for all the systems of a mesh). The factorization
 // of each set of values scatters them into the permuted pattern made by the analysis, where
-// Eigen's own permutes the whole matrix anew (a pass over it, allocations and a sort of its
-// columns) at every factorization.
+// Eigen's own permutes the whole matrix anew (counting its columns and allocating a copy) at
+// every factorization.
 class Ordered_ldlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower>
 {
   typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Base;
