@@ -94,7 +94,8 @@ private:
     m_lower_entries = lower.nonZeros();
     if(info() != Eigen::Success || !lower.isCompressed())
       return;
-    Matrix position = lower;
+    Matrix position; // assigned, not constructed: see minimum_degree_order()
+    position = lower;
     for(Eigen::Index k = 0; k < position.nonZeros(); ++k)
       position.valuePtr()[k] = double(k);
     m_permuted.resize(lower.rows(), lower.cols());
