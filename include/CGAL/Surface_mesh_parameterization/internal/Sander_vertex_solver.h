@@ -56,19 +56,15 @@ public:
   // `order`: the rows, first eliminated first; empty: the minimum degree order
   void analyze(const Matrix& lower, const std::vector<int>& order)
   {
-    if(order.empty()) {
-      analyzePattern(lower);
-    } else {
-      const Eigen::Index n = lower.rows();
-      m_P.resize(n);
-      for(Eigen::Index k = 0; k < n; ++k)
-        m_P.indices()[order[std::size_t(k)]] = int(k); // row -> place
-      m_Pinv = m_P.inverse();
-      CholMatrixType permuted(n, n);
-      permuted.selfadjointView<Eigen::Upper>() = lower.selfadjointView<Eigen::Lower>().twistedBy(m_P);
-      analyzePattern_preordered(permuted, true);
-    }
-    make_scatter(lower);
+    const std::vector<int> own = order.empty() ? minimum_degree_order(lower) : std::vector<int>();
+    const std::vector<int>& rows = order.empty() ? own : order;
+    const Eigen::Index n = lower.rows();
+    m_P.resize(n);
+    for(Eigen::Index k = 0; k < n; ++k)
+      m_P.indices()[rows[std::size_t(k)]] = int(k); // row -> place
+    m_Pinv = m_P.inverse();
+    permute_pattern(lower);
+    analyzePattern_preordered(m_permuted, true); // the pattern alone counts
   }
 
   // The factorization of `lower`, of the pattern analysed.
@@ -86,20 +82,22 @@ public:
   }
 
 private:
-  // The permuted pattern of `lower`, and where each of its values comes from in `lower`: the
-  // positions of `lower`'s values permuted as values (integers, exact in doubles).
-  void make_scatter(const Matrix& lower)
+  // The permuted pattern of `lower`, and, if `lower` is compressed, where each of its values
+  // comes from in `lower`: the positions of `lower`'s values permuted as values (integers,
+  // exact in doubles).
+  void permute_pattern(const Matrix& lower)
   {
-    m_source.clear();
-    m_lower_entries = lower.nonZeros();
-    if(info() != Eigen::Success || !lower.isCompressed())
-      return;
     Matrix position; // assigned, not constructed: see minimum_degree_order()
     position = lower;
+    position.makeCompressed();
     for(Eigen::Index k = 0; k < position.nonZeros(); ++k)
       position.valuePtr()[k] = double(k);
     m_permuted.resize(lower.rows(), lower.cols());
     m_permuted.selfadjointView<Eigen::Upper>() = position.selfadjointView<Eigen::Lower>().twistedBy(m_P);
+    m_lower_entries = lower.nonZeros();
+    m_source.clear();
+    if(!lower.isCompressed())
+      return;
     m_source.resize(std::size_t(m_permuted.nonZeros()));
     for(std::size_t k = 0; k < m_source.size(); ++k)
       m_source[k] = Matrix::StorageIndex(m_permuted.valuePtr()[k]);
