@@ -744,6 +744,39 @@ void jittered_grids(int n, std::mt19937& random, SMP::internal::Flat_triangles& 
   saddle.tri = plane.tri;
 }
 
+// A conformal map within the bound whose polish is left for later (Deferred_polish) ends as the
+// map polished at once, to the bit: on a saddle, whose map the polish moves, it is pending,
+// measured by its conformal map meanwhile (above the polished one); on a developable strip,
+// where the polish would take no step, nothing is left pending.
+void deferred_polish()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(5);
+  I::Flat_triangles plane, saddle;
+  jittered_grids(12, random, plane, saddle);
+  I::Chart_map now;
+  now.flat = saddle;
+  for(std::size_t t = 0; t < saddle.tri.size(); ++t)
+    now.triangles.push_back(t);
+  I::Chart_map later = now;
+  I::Chart_parameterization_settings settings;
+  settings.max_stretch = 1.5;
+  I::flatten_chart(now, settings);
+  I::Chart_parameterization_settings deferring = settings;
+  deferring.defer_polish = true;
+  I::flatten_chart(later, deferring);
+  SMP_CHECK(now.ok && !now.deferred.pending && later.ok && later.deferred.pending && later.l2 > now.l2,
+            "saddle: polish not left for later (ok " << later.ok << ", pending " << later.deferred.pending << ", L2 "
+                                                       << later.l2 << " against " << now.l2 << " polished)");
+  I::finish_polish(later, settings);
+  SMP_CHECK(later.ok && !later.deferred.pending && later.l2 == now.l2 && later.uv == now.uv,
+            "saddle: the polish left for later ends elsewhere (L2 " << later.l2 << " against " << now.l2 << ")");
+  I::Chart_map strip = cylinder_chart(30, 3, 30 * 0.1 / (2. * 3.14159265358979323846));
+  I::flatten_chart(strip, deferring);
+  SMP_CHECK(strip.ok && !strip.deferred.pending && std::abs(strip.l2 - 1.) < 1e-12,
+            "developable strip: ok " << strip.ok << ", pending " << strip.deferred.pending << ", L2 " << strip.l2);
+}
+
 // A chart's mask from its outline is the mask made triangle by triangle, cell for cell: on
 // jittered grids with triangles taken out (holes, notches, pieces apart), turned, at scales
 // from coarser to finer than the triangles and with pads of 0 to 2 cells (the jitter turns a
@@ -1610,6 +1643,7 @@ int run_test(int argc, char** argv)
   chart_mask_outline();
   vertex_sort();
   chart_starts();
+  deferred_polish();
   conformal_map_minimum();
   boundary_first_map_cases();
   convex_boundary_first_border();

@@ -291,6 +291,14 @@ public:
   // the solver of the Newton system, as the last polish left it
   const VertexSolver& newton_solver() const { return m_solver; }
 
+  // Whether polish() would take this start (its status not BAD_START): the checks alone, no step.
+  bool accepts(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<char>& fixed,
+               const std::vector<int>& border, const std::vector<Vec2>& uv, bool free_border)
+  {
+    std::string why;
+    return setup(m, guard, fixed, border, uv, free_border, why);
+  }
+
 private:
   // Whether a step that lowered the energy by `decrease` to `E` ends the steps: with a window of
   // one step, by that decrease; with a wider one, by the energy as reported (`reported`: E, or

@@ -34,12 +34,10 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // per triangle of their union, the most first; a union above the bound is taken back (`g` as it
 // was) and its pair not tried again; the unions tried hold at most as many triangles as the mesh
 // (10^4 at least), so that joining costs about one more flattening of the charts. A joined chart
-// b is emptied into chart a. Returns the pairs (a, b) joined, in order.
-inline std::vector<std::pair<std::size_t, std::size_t> >
-join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& charts,
-            const Chart_parameterization_settings& settings, int rounds, unsigned int threads)
+// b is emptied into chart a.
+inline void join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& charts,
+                        const Chart_parameterization_settings& settings, int rounds, unsigned int threads)
 {
-  std::vector<std::pair<std::size_t, std::size_t> > joined;
   std::set<std::pair<int, int> > failed;
   std::size_t budget = (std::max)(m.vertex.size(), std::size_t(10000));
   for(int round = 0; round < rounds; ++round) {
@@ -100,7 +98,6 @@ join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& 
             g.close_slit(slit.first);
         charts[a] = std::move(unions[i]);
         charts[b] = Chart_map();
-        joined.emplace_back(a, b);
         any = true;
       } else {
         g.undo(records[i]);
@@ -110,7 +107,6 @@ join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& 
     if(!any)
       break;
   }
-  return joined;
 }
 
 CGAL_SMP_END_SOLVER_NAMESPACE

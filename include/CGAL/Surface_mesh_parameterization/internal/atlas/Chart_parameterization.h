@@ -52,6 +52,17 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
+// The free-border polish of a chart's conformal map that is within the bound already, left for
+// when the chart is final (finish_polish()): until then the chart may be joined to a neighbour
+// or cut, and its polish would be lost. The start was checked to be one the polish takes, and
+// the polish of it later gives the map that a polish at once gives.
+struct Deferred_polish
+{
+  bool pending = false;
+  std::vector<Triangle> guard; // as polish_free_border() takes them
+  std::vector<int> border;
+};
+
 // A flattened chart: its triangles, the chart vertex of each of their corners, and the uv of
 // every chart vertex, in the orientation of the input's triangles (positive signed areas).
 struct Chart_map
@@ -67,6 +78,7 @@ struct Chart_map
   // another chart. `slits_closed`: the map glues them (uv equal on both sides).
   std::vector<std::pair<int, int> > slits;
   bool slits_closed = false;
+  Deferred_polish deferred;
 };
 
 struct Chart_parameterization_settings
@@ -86,19 +98,26 @@ struct Chart_parameterization_settings
   unsigned int threads = 1;              // of the polish of one chart (the map does not depend on it)
   // a boundary-first map above this L2 stretch gives way to LSCM's (see flatten_from_conformal())
   double boundary_first_limit = 2.;
+  // a conformal map within `max_stretch` is polished later (see Deferred_polish)
+  bool defer_polish = false;
 };
 
 // The charts from `begin` to `end` by their number of triangles, the largest first (in their
 // order among equals): charts flattened side by side are taken in this order, as a large chart
 // started last would keep one thread busy alone.
-inline std::vector<std::size_t> largest_first(const std::vector<Chart_map>& charts, std::size_t begin, std::size_t end)
+inline std::vector<std::size_t> largest_first(const std::vector<Chart_map>& charts, std::vector<std::size_t> order)
 {
-  std::vector<std::size_t> order(end - begin);
-  for(std::size_t i = 0; i < order.size(); ++i) order[i] = begin + i;
   std::stable_sort(order.begin(), order.end(), [&charts](std::size_t a, std::size_t b) {
     return charts[a].triangles.size() > charts[b].triangles.size();
   });
   return order;
+}
+
+inline std::vector<std::size_t> largest_first(const std::vector<Chart_map>& charts, std::size_t begin, std::size_t end)
+{
+  std::vector<std::size_t> order(end - begin);
+  for(std::size_t i = 0; i < order.size(); ++i) order[i] = begin + i;
+  return largest_first(charts, std::move(order));
 }
 
 // The settings of the first chart of `order` (see largest_first()), charts flattened side by
@@ -247,10 +266,11 @@ inline bool polish_free_border(const Flat_triangles& flat, const std::vector<Tri
 // positive area, the border loop simple: then no two triangles overlap, and the polish keeps it
 // so); false otherwise. The faces of `sm` are
 // those of `flat`, then the `guard` faces (holes filled): they keep their place in the map
-// without counting in its stretch.
+// without counting in its stretch. With `later`, a map within the bound that the polish takes
+// is not polished: `later` receives what its polish needs.
 inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Flat_triangles& flat,
                                    const std::vector<Triangle>& guard, const Chart_parameterization_settings& settings,
-                                   std::vector<Vec2>& uv)
+                                   std::vector<Vec2>& uv, Deferred_polish* later = nullptr)
 {
   std::vector<Chart_halfedge> loops;
   CGAL::Polygon_mesh_processing::extract_boundary_cycles(sm, std::back_inserter(loops));
@@ -279,6 +299,16 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
     const double l2 = Flat_stretch().evaluate(flat, uv).l2;
     if(boundary_first && !(l2 <= settings.boundary_first_limit))
       continue;
+    if(later != nullptr && l2 <= settings.max_stretch &&
+       Sander_energy_polisher<>().accepts(flat, guard, std::vector<char>(uv.size(), 0), border, uv, true)) {
+      // (a map about as close to an isometry as the polish gets it takes no step)
+      if(!(l2 * l2 - 1. <= Sander_polish_settings().tolerance)) {
+        later->pending = true;
+        later->guard = guard;
+        later->border = border;
+      }
+      return true;
+    }
     if(polish_free_border(flat, guard, border, settings, uv))
       return true;
   }
@@ -395,6 +425,19 @@ inline void measure_chart(Chart_map& chart)
     chart.ok = chart.ok && std::isfinite(q[0]) && std::isfinite(q[1]);
 }
 
+// The polish left for later on `chart` (see Deferred_polish), if any, and the chart measured
+// again. Should the polish fail (its solver), the chart keeps its conformal map, within the
+// bound.
+inline void finish_polish(Chart_map& chart, const Chart_parameterization_settings& settings)
+{
+  if(!chart.deferred.pending)
+    return;
+  const Deferred_polish d = std::move(chart.deferred);
+  chart.deferred = Deferred_polish();
+  polish_free_border(chart.flat, d.guard, d.border, settings, chart.uv);
+  measure_chart(chart);
+}
+
 // Builds `sm` from `flat`; false if a face cannot be added (the triangles do not make a
 // manifold surface).
 inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
@@ -416,7 +459,7 @@ inline bool make_chart_mesh(const Flat_triangles& flat, Chart_mesh& sm)
 // False if `sm` is not a surface of genus 0 with holes (`holes` false, `sm` unchanged), or a
 // hole cannot be filled, or neither conformal map is a bijection.
 inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Chart_parameterization_settings& settings,
-                          std::vector<Vec2>& uv, bool& holes)
+                          std::vector<Vec2>& uv, bool& holes, Deferred_polish* later = nullptr)
 {
   holes = false;
   std::vector<Chart_halfedge> loops;
@@ -472,7 +515,7 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
       guard.push_back({int(a), int(b), int(c)});
     }
   }
-  return flatten_from_conformal(sm, bhd, flat, guard, settings, uv);
+  return flatten_from_conformal(sm, bhd, flat, guard, settings, uv, later);
 }
 
 // The chart with its slits closed, so that it has holes instead, flattened by flatten_holed(),
@@ -542,6 +585,8 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
 {
   chart.ok = false;
   chart.slits_closed = false;
+  chart.deferred = Deferred_polish();
+  Deferred_polish* later = settings.defer_polish ? &chart.deferred : nullptr;
   if(chart.triangles.size() == 1) {
     layout_single_triangle(chart);
     measure_chart(chart);
@@ -580,8 +625,10 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     take_best();
     return;
   }
-  if(!minimize && chart.slits.empty() && flatten_holed(chart.flat, sm, settings, chart.uv, holes)) {
+  if(!minimize && chart.slits.empty() && flatten_holed(chart.flat, sm, settings, chart.uv, holes, later)) {
     measure_chart(chart);
+    if(!(chart.ok && chart.l2 <= settings.max_stretch))
+      finish_polish(chart, settings); // not taken as it is: polished now, as without `later`
     if(chart.ok && chart.l2 <= settings.max_stretch)
       return;
     keep();
@@ -589,8 +636,10 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
   // LSCM maps the two sides of a slit to a hole about onto each other, so its map of such a
   // chart is no bijection: that chart has had its LSCM start, with the slits closed
   if(!holes &&
-     flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings, chart.uv)) {
+     flatten_from_conformal(sm, bhd, chart.flat, std::vector<Triangle>(), settings, chart.uv, later)) {
     measure_chart(chart);
+    if(!(chart.ok && chart.l2 <= settings.max_stretch))
+      finish_polish(chart, settings);
     if(chart.ok && chart.l2 <= settings.max_stretch)
       return;
     keep();

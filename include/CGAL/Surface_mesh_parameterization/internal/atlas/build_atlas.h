@@ -352,7 +352,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   const unsigned int threads = thread_count(settings.threads);
   const std::size_t chunk = 64 * std::size_t(threads); // charts between two visits of the visitor
   std::size_t flattened = 0;
-  auto settle = [&](std::size_t begin, bool visit) {
+  auto settle = [&](std::size_t begin, bool visit, const Chart_parameterization_settings& chart_settings) {
     for(std::size_t end = begin; begin < charts.size(); begin = end) {
       end = (std::min)(charts.size(), begin + chunk);
       auto t1 = std::chrono::steady_clock::now();
@@ -362,11 +362,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         make_chart_vertices(m, g, charts[c]);
       }
       const std::vector<std::size_t> order = largest_first(charts, begin, end);
-      const Chart_parameterization_settings first = first_in_batch(charts, order, settings.chart, threads);
+      const Chart_parameterization_settings first = first_in_batch(charts, order, chart_settings, threads);
       areas.resize(charts.size());
       parallel_for_each(order.size(), threads, [&](std::size_t i) {
         Chart_map& chart = charts[order[i]];
-        flatten_chart(chart, i == 0 ? first : settings.chart);
+        flatten_chart(chart, i == 0 ? first : chart_settings);
         areas[order[i]] = chart.ok ? chart_areas(chart) : Chart_areas(); // a failed chart has no uv
       });
       r.seconds_parameterization += seconds_since(t1);
@@ -377,16 +377,27 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         settings.tell(Atlas_stage::FLATTENING, flattened, flattened + charts.size() - end);
     }
   };
-  settle(0, true);
+  // Until the charts are joined, a map within the bound is left unpolished (the charts joined
+  // are flattened again as one): the charts that remain are polished once, after the joins.
+  Chart_parameterization_settings deferring = settings.chart;
+  deferring.defer_polish = true;
+  settle(0, true, deferring);
 
   // neighbouring charts joined where their union flattens within the bound
   {
     const auto t1 = std::chrono::steady_clock::now();
-    const auto joined = join_charts(m, g, charts, settings.chart, settings.join_rounds, threads);
-    for(const std::pair<std::size_t, std::size_t>& pair : joined) {
-      areas[pair.first] = chart_areas(charts[pair.first]);
-      areas[pair.second] = Chart_areas();
-    }
+    join_charts(m, g, charts, deferring, settings.join_rounds, threads);
+    std::vector<std::size_t> pending;
+    for(std::size_t c = 0; c < charts.size(); ++c)
+      if(charts[c].deferred.pending)
+        pending.push_back(c);
+    pending = largest_first(charts, std::move(pending));
+    const Chart_parameterization_settings first = first_in_batch(charts, pending, settings.chart, threads);
+    parallel_for_each(pending.size(), threads, [&](std::size_t i) {
+      finish_polish(charts[pending[i]], i == 0 ? first : settings.chart);
+    });
+    for(std::size_t c = 0; c < charts.size(); ++c) // the joined ones, and the polished ones
+      areas[c] = charts[c].triangles.empty() || !charts[c].ok ? Chart_areas() : chart_areas(charts[c]);
     r.seconds_parameterization += seconds_since(t1);
   }
 
@@ -476,7 +487,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         uncuttable[c] = 1;
         continue;
       }
-      settle(before, false); // told as packing rounds
+      settle(before, false, settings.chart); // told as packing rounds
       gather();
       const double after = estimated_utilization();
       // better by more than the rounding of the charts' areas: those add up to the surface's
@@ -535,7 +546,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         charts[kept[i]].ok = false;
         cut_if_needed(kept[i]);
       }
-    settle(before, false);
+    settle(before, false, settings.chart);
     gather();
     packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
     measured = measure_packed_charts(charts, kept, uv, flipped);
