@@ -5,8 +5,8 @@
 #define CGAL_SMP_INTERNAL_COMPONENT_FACES_H
 
 // The faces of one connected component, by a walk over faces that share an edge, marked in a
-// face property map: PMP::connected_component() keeps a std::set of the faces, which took a
-// tenth of the time of U^0 on a 13k-vertex mesh.
+// face property map: PMP::connected_component() keeps a std::set of the faces, whose
+// allocations and look-ups cost more than the walk itself.
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/properties.h>

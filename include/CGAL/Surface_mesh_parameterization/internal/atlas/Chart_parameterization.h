@@ -233,13 +233,8 @@ std::vector<Vec2> read_uv(const Chart_mesh& sm, const UVMap& uvmap)
   return uv;
 }
 
-// Polishes the flip-free map `uv` of a chart (faces `flat`, then the `guard` faces, which keep
-// their place without counting in the stretch) by free-border Newton steps, the border loop
-// `border` kept simple, until polish_goes_on() ends them; false if the polisher refuses the
-// start (a flipped or flat face, or a border that is not simple), `uv` then unchanged.
-inline bool polish_free_border(const Flat_triangles& flat, const std::vector<Triangle>& guard,
-                               const std::vector<int>& border, const Chart_parameterization_settings& settings,
-                               std::vector<Vec2>& uv)
+// The polisher's settings for a chart (polish_free_border()).
+inline Sander_polish_settings free_border_polish_settings(const Chart_parameterization_settings& settings)
 {
   Sander_polish_settings ps;
   // Split Newton steps (u and v apart, an eighth of the flops to factor): from a map within
@@ -250,6 +245,18 @@ inline bool polish_free_border(const Flat_triangles& flat, const std::vector<Tri
   ps.threads = settings.threads;
   ps.supernodal_blas = false; // charts are flattened on several threads at once
   ps.max_iterations = settings.polish_iterations;
+  return ps;
+}
+
+// Polishes the flip-free map `uv` of a chart (faces `flat`, then the `guard` faces, which keep
+// their place without counting in the stretch) by free-border Newton steps, the border loop
+// `border` kept simple, until polish_goes_on() ends them; false if the polisher refuses the
+// start (a flipped or flat face, or a border that is not simple), `uv` then unchanged.
+inline bool polish_free_border(const Flat_triangles& flat, const std::vector<Triangle>& guard,
+                               const std::vector<int>& border, const Chart_parameterization_settings& settings,
+                               std::vector<Vec2>& uv)
+{
+  const Sander_polish_settings ps = free_border_polish_settings(settings);
   double energy = HUGE_VAL;
   const Sander_polish_visitor enough = [&](const Sander_polish_step& step) {
     const double before = energy;
@@ -299,10 +306,10 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
     const double l2 = Flat_stretch().evaluate(flat, uv).l2;
     if(boundary_first && !(l2 <= settings.boundary_first_limit))
       continue;
+    const Sander_polish_settings ps = free_border_polish_settings(settings);
     if(later != nullptr && l2 <= settings.max_stretch &&
-       Sander_energy_polisher<>().accepts(flat, guard, std::vector<char>(uv.size(), 0), border, uv, true)) {
-      // (a map about as close to an isometry as the polish gets it takes no step)
-      if(!(l2 * l2 - 1. <= Sander_polish_settings().tolerance)) {
+       Sander_energy_polisher<>().accepts(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps.free_border)) {
+      if(!polish_takes_no_step(l2, ps)) {
         later->pending = true;
         later->guard = guard;
         later->border = border;
