@@ -777,6 +777,39 @@ void deferred_polish()
             "developable strip: ok " << strip.ok << ", pending " << strip.deferred.pending << ", L2 " << strip.l2);
 }
 
+// A map within the bound whose polish could gain less than the polish tolerance (L2^2 - 1 below
+// it) is taken as it is, deferred or not: on a slightly bent jittered grid, the conformal map is
+// neither polished nor left pending; with a tolerance below its L2^2 - 1, the polish moves it.
+void polish_left_out_when_it_gains_too_little()
+{
+  namespace I = SMP::internal;
+  std::mt19937 random(5);
+  I::Flat_triangles plane, saddle;
+  jittered_grids(12, random, plane, saddle);
+  I::Chart_map bent;
+  bent.flat = plane;
+  for(I::Vec3& p : bent.flat.xyz) p[2] += 0.02 * (p[0] * p[0] - p[1] * p[1]);
+  for(std::size_t t = 0; t < bent.flat.tri.size(); ++t)
+    bent.triangles.push_back(t);
+  I::Chart_parameterization_settings settings;
+  settings.max_stretch = 1.5;
+  I::Chart_parameterization_settings deferring = settings;
+  deferring.defer_polish = true;
+  I::Chart_map now = bent, later = bent, polished = bent;
+  I::flatten_chart(now, settings);
+  I::flatten_chart(later, deferring);
+  const double gain = now.l2 * now.l2 - 1.;
+  SMP_CHECK(now.ok && gain > 1e-6 && gain <= settings.polish_tolerance,
+            "slightly bent grid: L2^2 - 1 = " << gain << ", not between the polisher's tolerance and the chart's");
+  SMP_CHECK(later.ok && !later.deferred.pending && later.uv == now.uv,
+            "slightly bent grid: pending " << later.deferred.pending << ", or another map than the one taken at once");
+  I::Chart_parameterization_settings finer = settings;
+  finer.polish_tolerance = 0.1 * gain;
+  I::flatten_chart(polished, finer);
+  SMP_CHECK(polished.ok && polished.l2 < now.l2,
+            "slightly bent grid: a finer tolerance does not polish (L2 " << polished.l2 << " against " << now.l2 << ")");
+}
+
 // A chart's mask from its outline is the mask made triangle by triangle, cell for cell: on
 // jittered grids with triangles taken out (holes, notches, pieces apart), turned, at scales
 // from coarser to finer than the triangles and with pads of 0 to 2 cells (the jitter turns a
@@ -1644,6 +1677,7 @@ int run_test(int argc, char** argv)
   vertex_sort();
   chart_starts();
   deferred_polish();
+  polish_left_out_when_it_gains_too_little();
   conformal_map_minimum();
   boundary_first_map_cases();
   convex_boundary_first_border();

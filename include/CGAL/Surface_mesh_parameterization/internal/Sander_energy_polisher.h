@@ -88,14 +88,14 @@ struct Sander_polish_settings
   bool supernodal_blas = true;
 };
 
-// Whether a start of normalized L2 stretch `l2` is taken as it is (no step): the stretch is at
-// least 1 and its square is in proportion to the energy (E * A with the area term), so no step
-// can lower the energy by more than L2^2 - 1 relatively; below the tolerance the first step
-// would end the polish, after a factorization (a developable chart's conformal map, an
-// isometry up to rounding, is one).
-inline bool polish_takes_no_step(double l2, const Sander_polish_settings& settings)
+// Whether a start of normalized L2 stretch `l2` is taken as it is (no step) by a polish that
+// ends at a relative gain of `tolerance`: the stretch is at least 1 and its square is in
+// proportion to the energy (E * A with the area term), so no step can lower the energy by more
+// than L2^2 - 1 relatively; below the tolerance the first step would end the polish, after a
+// factorization (a developable chart's conformal map, an isometry up to rounding, is one).
+inline bool polish_takes_no_step(double l2, double tolerance)
 {
-  return l2 * l2 - 1. <= settings.tolerance;
+  return l2 * l2 - 1. <= tolerance;
 }
 
 // What a visitor sees after every Newton step.
@@ -188,7 +188,7 @@ public:
     m_mu = 0.;
     double E = energy_at(0.);
     r.energy_before = r.energy_after = m_area_term ? E * m_area_uv : E;
-    if(m_dofs == 0 || polish_takes_no_step(r.l2_before, settings)) {
+    if(m_dofs == 0 || polish_takes_no_step(r.l2_before, settings.tolerance)) {
       r.stop = Sander_polish_stop::CONVERGED;
       r.seconds = seconds();
       return r;

@@ -307,9 +307,14 @@ inline bool flatten_from_conformal(Chart_mesh& sm, Chart_halfedge bhd, const Fla
     if(boundary_first && !(l2 <= settings.boundary_first_limit))
       continue;
     const Sander_polish_settings ps = free_border_polish_settings(settings);
-    if(later != nullptr && l2 <= settings.max_stretch &&
-       Sander_energy_polisher<>().accepts(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps.free_border)) {
-      if(!polish_takes_no_step(l2, ps)) {
+    // within the bound, the polish ends at a gain below `polish_tolerance` (polish_goes_on()):
+    // a map that cannot gain that much is taken as it is, once the polish would take it
+    const bool within = l2 <= settings.max_stretch;
+    const bool as_it_is = within && polish_takes_no_step(l2, (std::max)(ps.tolerance, settings.polish_tolerance));
+    if(within && (as_it_is || later != nullptr)) {
+      if(!Sander_energy_polisher<>().accepts(flat, guard, std::vector<char>(uv.size(), 0), border, uv, ps.free_border))
+        continue; // the polish would refuse it too
+      if(!as_it_is) {
         later->pending = true;
         later->guard = guard;
         later->border = border;
