@@ -769,21 +769,20 @@ inline Packing_result estimate_packing(const Packing_input& in, const Packing_se
   return r;
 }
 
-// Packs the charts (`uv[c]`, each in its own frame, with its triangles `tri[c]`, its uv area
-// and its surface area) into the unit square, in place: on a grid of `resolution` cells a
-// side, each chart's triangles widened by half the gutter, so that two charts are at least a
-// gutter apart and never overlap. The scale is searched on a coarse grid first.
-inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
-                                  const std::vector<double>& area_uv, const std::vector<double>& area_3d,
-                                  const Packing_settings& settings, double scale_hint = 0.)
+// Packs the charts made ready in `in` (prepare_packing()), whose coarse layout is `coarse`
+// (estimate_packing() of `in`), into the unit square: `uv[c]` receives chart c placed there.
+// On a grid of `resolution` cells a side, each chart's triangles widened by half the gutter, so
+// that two charts are at least a gutter apart and never overlap.
+inline Packing_result pack_prepared(const Packing_input& in, const Packing_result& coarse, const Packing_settings& settings,
+                                    std::vector<std::vector<Vec2> >& uv)
 {
   Packing_result r;
-  const std::size_t n = uv.size();
+  const std::size_t n = in.area.size();
+  uv.resize(n);
   if(n == 0) return r;
-  const Packing_input in = prepare_packing(uv, tri, area_uv, area_3d, settings.threads);
+  const std::vector<std::vector<Triangle> >& tri = *in.tri;
   const long cells = long((std::max)(settings.resolution, 16u));
   const long pad = long(std::ceil(0.5 * settings.gutter));
-  const Packing_result coarse = estimate_packing(in, settings, scale_hint);
   // the search ends at a square of 98% to 100% of the texture: the coarse scale, a little too
   // hopeful (its gutter rounds to fewer cells, often none), is aimed at the middle of that window
   const double start = coarse.scale > 0. ? 0.99 * coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
@@ -797,7 +796,7 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
     best.x.assign(n, 0); best.y.assign(n, 0); best.turn.assign(n, 0); best.shift.assign(n, Vec2{0., 0.});
     long row = 0, widest = 0;
     for(std::size_t c = 0; c < n; ++c) {
-      const Chart_mask m = chart_mask(uv[c], tri[c], in.outline[c], best.scale, pad);
+      const Chart_mask m = chart_mask(in.turned_uv[c][0], tri[c], in.outline[c], best.scale, pad);
       best.y[c] = row;
       row += m.height();
       widest = (std::max)(widest, m.width);
@@ -817,6 +816,18 @@ inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std
   r.scale = best.scale * double(cells) / side;
   r.utilization = in.charts_area * best.scale * best.scale / (side * side);
   return r;
+}
+
+// Packs the charts (`uv[c]`, each in its own frame, with its triangles `tri[c]`, its uv area
+// and its surface area) into the unit square, in place (see pack_prepared()). The scale is
+// searched on a coarse grid first, from `scale_hint` if given.
+inline Packing_result pack_charts(std::vector<std::vector<Vec2> >& uv, const std::vector<std::vector<Triangle> >& tri,
+                                  const std::vector<double>& area_uv, const std::vector<double>& area_3d,
+                                  const Packing_settings& settings, double scale_hint = 0.)
+{
+  if(uv.empty()) return Packing_result();
+  const Packing_input in = prepare_packing(uv, tri, area_uv, area_3d, settings.threads);
+  return pack_prepared(in, estimate_packing(in, settings, scale_hint), settings, uv);
 }
 
 } // namespace internal

@@ -432,6 +432,14 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   bool final_estimates = false;
   std::vector<std::vector<Vec2> > trial_uv, accepted_uv;
   Packing_result trial, accepted;
+  // a coarse packing and the charts made ready for it: of the last charts estimated
+  // (`estimated`), and of the charts as they stand (`current`), where the final packing starts
+  struct Coarse_packing
+  {
+    Packing_input input;
+    Packing_result layout;
+    bool valid = false;
+  } estimated, current;
   auto estimated_utilization = [&]() {
     std::vector<std::vector<Vec2> > turned = uv;
     if(final_estimates) {
@@ -439,14 +447,16 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       trial_uv.swap(turned);
       return trial.utilization;
     }
-    const Packing_result estimate =
-      estimate_packing(prepare_packing(turned, chart_triangles, area_uv, area_3d, settings.packing.threads), settings.packing, scale_hint);
-    scale_hint = estimate.scale;
-    return estimate.utilization;
+    estimated.input = prepare_packing(turned, chart_triangles, area_uv, area_3d, settings.packing.threads);
+    estimated.layout = estimate_packing(estimated.input, settings.packing, scale_hint);
+    estimated.valid = true;
+    scale_hint = estimated.layout.scale;
+    return estimated.layout.utilization;
   };
   gather();
   const int rounds = settings.packing.max_cut_rounds;
   double utilization = rounds > 0 ? estimated_utilization() : 0.;
+  current = std::move(estimated);
   std::vector<char> tried, uncuttable; // per chart: its cut was taken back; it cannot be cut
   // the longest chart that may be cut (kept.size() if none), among those not tried if `untried`
   auto longest_chart = [&](bool untried, std::vector<double>& best_along) {
@@ -498,6 +508,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         if(final_estimates) {
           accepted = trial;
           accepted_uv.swap(trial_uv);
+        } else {
+          current = std::move(estimated);
         }
         if(forced)
           tried.assign(tried.size(), 0); // the others may fill the square better now
@@ -516,7 +528,13 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     }
   };
   cut_rounds();
-  Packing_result packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+  Packing_result packed;
+  if(current.valid) { // the charts as they were last estimated: packed from that estimate
+    current.input.tri = &chart_triangles;
+    packed = pack_prepared(current.input, current.layout, settings.packing, uv);
+  } else {
+    packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
+  }
   if(utilization >= settings.packing.goal && packed.utilization < settings.packing.goal) {
     // the coarse packing was too hopeful (its cells are coarser, and the gutter can round to
     // none of them): the rounds go on, measured by the final packing
