@@ -417,12 +417,25 @@ private:
       }
       add_unit(u, c, k.side, allowed);
     }
+    // zips made possible by later ones, in passes over the sides that may still be zipped (the
+    // unglued sides whose mates are in the chart) until a pass zips none
     Chart_state& st = m_state[std::size_t(c)];
-    for(bool again = true; again;) { // zips made possible by later ones
+    std::vector<int> open;
+    for(std::size_t t : st.members)
+      for(int k = 0; k < 3; ++k) {
+        const int s = int(3 * t) + k, m = m_mate[s];
+        if(m >= 0 && !m_glued[s] && m_chart[std::size_t(m / 3)] == c)
+          open.push_back(s);
+      }
+    for(bool again = true; again;) {
       again = false;
-      for(std::size_t t : st.members)
-        for(int k = 0; k < 3; ++k)
-          again = try_zip(int(3 * t + k), c, st.border) || again;
+      std::size_t kept = 0;
+      for(const int s : open) {
+        again = try_zip(s, c, st.border) || again;
+        if(!m_glued[s])
+          open[kept++] = s;
+      }
+      open.resize(kept);
     }
   }
 
