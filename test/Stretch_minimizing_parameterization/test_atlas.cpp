@@ -744,6 +744,16 @@ void jittered_grids(int n, std::mt19937& random, SMP::internal::Flat_triangles& 
   saddle.tri = plane.tri;
 }
 
+// A chart of all the triangles of `flat`, whose vertices they are.
+SMP::internal::Chart_map whole_chart(const SMP::internal::Flat_triangles& flat)
+{
+  SMP::internal::Chart_map chart;
+  chart.flat = flat;
+  for(std::size_t t = 0; t < flat.tri.size(); ++t)
+    chart.triangles.push_back(t);
+  return chart;
+}
+
 // A conformal map within the bound whose polish is left for later (Deferred_polish) ends as the
 // map polished at once, to the bit: on a saddle, whose map the polish moves, it is pending,
 // measured by its conformal map meanwhile (above the polished one); on a developable strip,
@@ -754,10 +764,7 @@ void deferred_polish()
   std::mt19937 random(5);
   I::Flat_triangles plane, saddle;
   jittered_grids(12, random, plane, saddle);
-  I::Chart_map now;
-  now.flat = saddle;
-  for(std::size_t t = 0; t < saddle.tri.size(); ++t)
-    now.triangles.push_back(t);
+  I::Chart_map now = whole_chart(saddle);
   I::Chart_map later = now;
   I::Chart_parameterization_settings settings;
   settings.max_stretch = 1.5;
@@ -786,11 +793,8 @@ void polish_left_out_when_it_gains_too_little()
   std::mt19937 random(5);
   I::Flat_triangles plane, saddle;
   jittered_grids(12, random, plane, saddle);
-  I::Chart_map bent;
-  bent.flat = plane;
-  for(I::Vec3& p : bent.flat.xyz) p[2] += 0.02 * (p[0] * p[0] - p[1] * p[1]);
-  for(std::size_t t = 0; t < bent.flat.tri.size(); ++t)
-    bent.triangles.push_back(t);
+  for(I::Vec3& p : plane.xyz) p[2] += 0.02 * (p[0] * p[0] - p[1] * p[1]);
+  const I::Chart_map bent = whole_chart(plane);
   I::Chart_parameterization_settings settings;
   settings.max_stretch = 1.5;
   I::Chart_parameterization_settings deferring = settings;
