@@ -41,6 +41,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <type_traits>
 #include <unordered_map>
@@ -162,20 +163,22 @@ inline void make_chart_vertices(const Atlas_triangles& m, Chart_growing& g, Char
 {
   chart.corner_vertex.assign(3 * chart.triangles.size(), -1);
   chart.flat = Flat_triangles();
-  std::vector<std::pair<int, int> > roots; // (root corner, chart corner slot)
+  // (root corner, chart corner slot) in one integer, whose order is that of the pairs: the
+  // chart vertices are numbered by root corner
+  std::vector<std::uint64_t> roots;
   roots.reserve(chart.corner_vertex.size());
   for(std::size_t i = 0; i < chart.triangles.size(); ++i)
-    for(int k = 0; k < 3; ++k)
-      roots.emplace_back(g.chart_vertex(int(3 * chart.triangles[i]) + k), int(3 * i) + k);
+    for(std::size_t k = 0; k < 3; ++k)
+      roots.push_back(std::uint64_t(g.chart_vertex(int(3 * chart.triangles[i] + k))) << 32 | std::uint64_t(3 * i + k));
   std::sort(roots.begin(), roots.end());
   int n = -1;
   for(std::size_t r = 0; r < roots.size(); ++r) {
-    if(r == 0 || roots[r].first != roots[r - 1].first) {
+    const std::size_t c = std::size_t(roots[r] >> 32);
+    if(r == 0 || c != std::size_t(roots[r - 1] >> 32)) {
       ++n;
-      const int c = roots[r].first;
-      chart.flat.xyz.push_back(m.xyz[std::size_t(m.vertex[std::size_t(c / 3)][std::size_t(c % 3)])]);
+      chart.flat.xyz.push_back(m.xyz[std::size_t(m.vertex[c / 3][c % 3])]);
     }
-    chart.corner_vertex[std::size_t(roots[r].second)] = n;
+    chart.corner_vertex[std::size_t(roots[r] & 0xffffffffu)] = n;
   }
   for(std::size_t i = 0; i < chart.triangles.size(); ++i)
     chart.flat.tri.push_back({chart.corner_vertex[3 * i], chart.corner_vertex[3 * i + 1], chart.corner_vertex[3 * i + 2]});
