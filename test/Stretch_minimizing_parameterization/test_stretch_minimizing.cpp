@@ -464,9 +464,21 @@ void check_ordered_solvers()
   for(int k = 0; k < other.nonZeros(); ++k)
     other.valuePtr()[k] *= 1. + 0.3 * std::cos(double(k));
   const Eigen::VectorXd y = Eigen::SimplicialLDLT<Matrix, Eigen::Lower>(other).solve(b);
-  SMP::internal::Ordered_ldlt own;
+  SMP::internal::Ordered_ldlt own, paired;
   own.analyze(lower, std::vector<int>());
-  for(SMP::internal::Ordered_ldlt* solver : {&ldlt, &own}) {
+  // the rows taken as pairs (2k, 2k + 1), as the u and v of a vertex: the minimum degree order
+  // of the pairs keeps each pair together and is a permutation of the rows
+  const std::vector<int> pairs = SMP::internal::minimum_degree_order(lower, true);
+  std::vector<char> seen(std::size_t(n), 0);
+  bool together = pairs.size() == std::size_t(n);
+  for(std::size_t k = 0; together && k < pairs.size(); ++k) {
+    const int r = pairs[k];
+    together = r >= 0 && r < n && !seen[std::size_t(r)] && (k % 2 == 0 ? r % 2 == 0 : r == pairs[k - 1] + 1);
+    if(together) seen[std::size_t(r)] = 1;
+  }
+  SMP_CHECK(together, "the minimum degree order of the pairs of rows splits a pair or is no permutation");
+  paired.analyze(lower, std::vector<int>(), true);
+  for(SMP::internal::Ordered_ldlt* solver : {&ldlt, &own, &paired}) {
     solver->factorize(other);
     SMP_CHECK(solver->info() == Eigen::Success && (solver->solve(b) - y).norm() < 1e-10 * y.norm(),
               "Eigen's LDL^T solves otherwise with new values on the pattern analysed");

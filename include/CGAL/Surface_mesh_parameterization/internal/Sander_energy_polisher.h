@@ -174,6 +174,7 @@ public:
     if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
       return fail(Sander_polish_status::BAD_START, why);
     m_solver.set_supernodal_rows(Eigen::Index(settings.newton_supernodal_rows), settings.supernodal_blas);
+    m_solver.set_paired_rows(true); // u and v of an unknown: rows 2k and 2k + 1
     if(settings.direction != Sander_polish_direction::NEWTON || 2 * m_dofs >= settings.newton_supernodal_rows)
       order_vertex_systems(m, guard, settings.vertex_rank, settings.direction == Sander_polish_direction::NEWTON);
     else

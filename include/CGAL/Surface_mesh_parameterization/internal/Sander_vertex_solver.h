@@ -29,16 +29,41 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // The minimum degree order in which Eigen's simplicial LDL^T of `lower` (a lower triangle)
 // would eliminate the rows, first eliminated first: given to several systems of one pattern, it
-// is computed once and the factorizations are the same.
-inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& lower)
+// is computed once and the factorizations are the same. With `paired`, rows 2k and 2k + 1 are
+// the u and v of one vertex (an even number of rows): the order is that of the vertices, found
+// on their pattern (a quarter of the system's entries), each pair of rows eliminated together,
+// as the minimum degree order of the whole system would mostly eliminate them too.
+inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& lower, bool paired = false)
 {
+  typedef Eigen::SparseMatrix<double> Matrix;
   // assigned, not constructed: Eigen's constructor from a view leaks its column array when an
   // allocation that follows throws (no destructor runs for an object whose constructor threw)
-  Eigen::SparseMatrix<double> full;
-  full = lower.selfadjointView<Eigen::Lower>();
+  Matrix full;
+  paired = paired && lower.rows() % 2 == 0;
+  if(paired) {
+    std::vector<Eigen::Triplet<double> > entries;
+    entries.reserve(2 * std::size_t(lower.nonZeros()));
+    for(Eigen::Index j = 0; j < lower.outerSize(); ++j)
+      for(Matrix::InnerIterator it(lower, j); it; ++it) {
+        entries.emplace_back(int(it.row() / 2), int(j / 2), 1.);
+        entries.emplace_back(int(j / 2), int(it.row() / 2), 1.);
+      }
+    full.resize(lower.rows() / 2, lower.cols() / 2);
+    full.setFromTriplets(entries.begin(), entries.end());
+  } else {
+    full = lower.selfadjointView<Eigen::Lower>();
+  }
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
   Eigen::AMDOrdering<int>()(full, order);
-  return std::vector<int>(order.indices().data(), order.indices().data() + order.indices().size());
+  const int* first = order.indices().data();
+  if(!paired)
+    return std::vector<int>(first, first + order.indices().size());
+  std::vector<int> rows(std::size_t(2 * order.indices().size()));
+  for(std::size_t k = 0; 2 * k < rows.size(); ++k) {
+    rows[2 * k] = 2 * first[k];
+    rows[2 * k + 1] = 2 * first[k] + 1;
+  }
+  return rows;
 }
 
 // Eigen's simplicial LDL^T, in its own minimum degree order or in an order given by rows
@@ -53,10 +78,11 @@ class Ordered_ldlt : public Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, E
 public:
   typedef Eigen::SparseMatrix<double> Matrix;
 
-  // `order`: the rows, first eliminated first; empty: the minimum degree order
-  void analyze(const Matrix& lower, const std::vector<int>& order)
+  // `order`: the rows, first eliminated first; empty: the minimum degree order (`paired`: see
+  // minimum_degree_order())
+  void analyze(const Matrix& lower, const std::vector<int>& order, bool paired = false)
   {
-    const std::vector<int> own = order.empty() ? minimum_degree_order(lower) : std::vector<int>();
+    const std::vector<int> own = order.empty() ? minimum_degree_order(lower, paired) : std::vector<int>();
     const std::vector<int>& rows = order.empty() ? own : order;
     const Eigen::Index n = lower.rows();
     m_P.resize(n);
@@ -171,6 +197,10 @@ public:
     m_blas = blas;
   }
 
+  // whether rows 2k and 2k + 1 are the u and v of one vertex, so that a minimum degree order
+  // is found on the vertices (see minimum_degree_order()); from the next analysis on
+  void set_paired_rows(bool paired) { m_paired = paired; }
+
   // `order`: the rows, first eliminated first (see vertex_order.h); empty: a minimum degree order
   void analyzePattern(const Matrix& lower, const std::vector<int>& order = std::vector<int>())
   {
@@ -185,7 +215,7 @@ public:
     if(m_method == Method::LU)
       m_lu.analyze_lower(lower);
     else if(m_method == Method::SIMPLICIAL)
-      m_ldlt.analyze(lower, order);
+      m_ldlt.analyze(lower, order, m_paired);
   }
 
   void factorize(const Matrix& lower)
@@ -206,7 +236,7 @@ public:
     if(m_method != Method::SIMPLICIAL) {
       // not definite to working precision after all: the LDL^T, in the same order
       m_method = Method::SIMPLICIAL;
-      m_ldlt.analyze(lower, m_order);
+      m_ldlt.analyze(lower, m_order, m_paired);
     }
     m_ldlt.factorize(lower);
   }
@@ -252,6 +282,7 @@ private:
   bool m_definite = false;
   Eigen::Index m_supernodal_rows = default_supernodal_rows;
   bool m_blas = true;
+  bool m_paired = false;
   Method m_method = Method::SIMPLICIAL; // of the last analysis
 };
 

@@ -176,6 +176,7 @@ inline bool conformal_map(const std::vector<Vec3>& xyz, const std::vector<Triang
   Sander_vertex_solver solver(true);
   // like the other systems of the charts, flattened on several threads at once: without BLAS
   solver.set_supernodal_rows(Sander_vertex_solver::blocked_supernodal_rows, false);
+  solver.set_paired_rows(true);
   solver.compute(lower);
   if(solver.info() != Eigen::Success)
     return false;
