@@ -6,7 +6,10 @@
 // pick instead. One Markdown table row per method and mesh on standard output; with a folder
 // as last argument, the new meshes are written there as OFF.
 //
-//   remeshing_comparison VERTICES MESH... [--out DIR]
+//   remeshing_comparison VERTICES MESH... [--out DIR] [--relaxation N]
+//
+// --relaxation N: the relaxation steps of the three pairs (default: remesh_with_parameterizations()'s);
+// with 0, the figures are those of the samples as the error diffusion placed them.
 //
 // Figures: vertices, angles (smallest, share of 30 degrees or more), coefficient of variation
 // of the triangle areas, symmetric Hausdorff distance to the input over its bounding box
@@ -67,15 +70,18 @@ void row(const std::string& mesh_name, const std::string& method, const Mesh& in
 int main(int argc, char** argv)
 {
   if(argc < 3) {
-    std::cerr << "usage: remeshing_comparison VERTICES MESH... [--out DIR]\n";
+    std::cerr << "usage: remeshing_comparison VERTICES MESH... [--out DIR] [--relaxation N]\n";
     return 2;
   }
   const std::size_t n = std::stoul(argv[1]);
   std::string out_dir;
+  int relaxation = -1; // the function's default
   std::vector<std::string> files;
   for(int i = 2; i < argc; ++i) {
     if(std::string(argv[i]) == "--out" && i + 1 < argc)
       out_dir = argv[++i];
+    else if(std::string(argv[i]) == "--relaxation" && i + 1 < argc)
+      relaxation = std::stoi(argv[++i]);
     else
       files.push_back(argv[i]);
   }
@@ -100,7 +106,9 @@ int main(int argc, char** argv)
     for(const auto& [pair, label] : pairs) {
       Mesh out;
       const auto t = std::chrono::steady_clock::now();
-      const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(in, n, out, SMP::parameters::parameterization_pair(pair));
+      const auto np = SMP::parameters::parameterization_pair(pair);
+      const SMP::Remeshing_report r = relaxation < 0 ? SMP::remesh_with_parameterizations(in, n, out, np)
+                                                     : SMP::remesh_with_parameterizations(in, n, out, np.number_of_relaxation_steps(relaxation));
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
       if(r.status != SMP::OK) {
         std::printf("| %s | %s | failed: %s |\n", name.c_str(), label, r.message.c_str());
