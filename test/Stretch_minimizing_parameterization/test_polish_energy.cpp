@@ -10,6 +10,7 @@
 
 #include <Eigen/Dense>
 
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -135,6 +136,16 @@ void test_face_derivatives()
       Eigen::Matrix2d J;
       J << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
       J *= scale;
+      Eigen::Matrix4d H;
+      SI::sander_face_energy(J, 0.7, 0.2, nullptr, &H);
+      check_projection(J, 0.7, 0.2, H);
+    }
+  // J^T J diagonal (its right singular vectors the axes), its larger entry first or second, and
+  // nearly so
+  for(const double off : {0., 1e-12, -1e-12})
+    for(const std::array<double, 2>& diagonal : {std::array<double, 2>{2., 0.5}, std::array<double, 2>{0.5, 2.}}) {
+      Eigen::Matrix2d J;
+      J << diagonal[0], off, 0., diagonal[1];
       Eigen::Matrix4d H;
       SI::sander_face_energy(J, 0.7, 0.2, nullptr, &H);
       check_projection(J, 0.7, 0.2, H);

@@ -83,13 +83,23 @@ inline double sander_face_energy(const Eigen::Matrix2d& J, double area, double m
 // \pre det(J) > 0
 inline Eigen::Matrix4d sander_face_projected_hessian(const Eigen::Matrix2d& J, double area, double mu, double ratio)
 {
-  // right singular vectors: the eigenvectors of J^T J
+  // right singular vectors: the eigenvectors of J^T J = [a b; b c], v1 = (cos t, sin t) with
+  // (cos 2t, sin 2t) = ((a - c) / 2, b) / r, its half angle taken from the larger of
+  // 1 + cos 2t and 1 - cos 2t (no cancellation)
   const Eigen::Matrix2d JtJ = J.transpose() * J;
-  const double theta = 0.5 * std::atan2(2. * JtJ(0, 1), JtJ(0, 0) - JtJ(1, 1));
-  const Eigen::Vector2d v1(std::cos(theta), std::sin(theta)), v2(-v1(1), v1(0));
   const double d = J.determinant(), n = JtJ.trace();
-  const double half_gap = 0.5 * (JtJ(0, 0) - JtJ(1, 1));
-  const double s1 = std::sqrt(0.5 * n + std::sqrt(half_gap * half_gap + JtJ(0, 1) * JtJ(0, 1)));
+  const double half_gap = 0.5 * (JtJ(0, 0) - JtJ(1, 1)), b = JtJ(0, 1);
+  const double r = std::sqrt(half_gap * half_gap + b * b);
+  Eigen::Vector2d v1(1., 0.);
+  if(r > 0. && half_gap >= 0.) {
+    v1(0) = std::sqrt(0.5 * (1. + half_gap / r));
+    v1(1) = b / (2. * r * v1(0));
+  } else if(r > 0.) {
+    v1(1) = std::copysign(std::sqrt(0.5 * (1. - half_gap / r)), b);
+    v1(0) = b / (2. * r * v1(1));
+  }
+  const Eigen::Vector2d v2(-v1(1), v1(0));
+  const double s1 = std::sqrt(0.5 * n + r);
   const double s2 = d / s1; // accurate where s2^2 from the eigenvalues would cancel
   const Eigen::Vector2d u1 = J * v1 / s1, u2 = J * v2 / s2;
   auto vec = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { // vec(a b^T), row-major
