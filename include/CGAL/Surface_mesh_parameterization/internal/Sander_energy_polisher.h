@@ -464,14 +464,8 @@ private:
     } else {
       m_order.clear();
     }
-    if(newton && !m_order.empty()) {
-      std::vector<int> rows(2 * m_order.size());
-      for(std::size_t k = 0; k < m_order.size(); ++k) {
-        rows[2 * k] = 2 * m_order[k];
-        rows[2 * k + 1] = 2 * m_order[k] + 1;
-      }
-      m_order.swap(rows);
-    }
+    if(newton)
+      m_order = paired_rows(m_order);
   }
 
   // The pattern of the lower triangle of the Newton system; every face keeps where its 6x6

@@ -27,6 +27,18 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
+// The rows of a system whose unknown k has the rows 2k and 2k + 1 (u and v of a vertex), in the
+// order `order` of the unknowns (first eliminated first), each pair of rows together.
+inline std::vector<int> paired_rows(const std::vector<int>& order)
+{
+  std::vector<int> rows(2 * order.size());
+  for(std::size_t k = 0; k < order.size(); ++k) {
+    rows[2 * k] = 2 * order[k];
+    rows[2 * k + 1] = 2 * order[k] + 1;
+  }
+  return rows;
+}
+
 // The minimum degree order in which Eigen's simplicial LDL^T of `lower` (a lower triangle)
 // would eliminate the rows, first eliminated first: given to several systems of one pattern, it
 // is computed once and the factorizations are the same. With `paired`, rows 2k and 2k + 1 are
@@ -55,15 +67,8 @@ inline std::vector<int> minimum_degree_order(const Eigen::SparseMatrix<double>& 
   }
   Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> order;
   Eigen::AMDOrdering<int>()(full, order);
-  const int* first = order.indices().data();
-  if(!paired)
-    return std::vector<int>(first, first + order.indices().size());
-  std::vector<int> rows(std::size_t(2 * order.indices().size()));
-  for(std::size_t k = 0; 2 * k < rows.size(); ++k) {
-    rows[2 * k] = 2 * first[k];
-    rows[2 * k + 1] = 2 * first[k] + 1;
-  }
-  return rows;
+  const std::vector<int> first_eliminated(order.indices().data(), order.indices().data() + order.indices().size());
+  return paired ? paired_rows(first_eliminated) : first_eliminated;
 }
 
 // Eigen's simplicial LDL^T, in its own minimum degree order or in an order given by rows
