@@ -3,7 +3,8 @@
 //
 // remesh_with_parameterizations(): the new mesh is a valid oriented triangle mesh on the input
 // surface with the input's border loops, about the number of vertices asked for, on analytic
-// cases (a planar disk, a cylinder patch) and the bundled meshes; {U^0, U^opt} samples more
+// cases (a planar disk, a cylinder patch) and the bundled meshes; the relaxation evens the surface
+// areas where the domain is squeezed; {U^0, U^opt} samples more
 // evenly than {U^0}; bad input gets an error and leaves the output alone.
 
 #include "smp_test_util.h"
@@ -21,6 +22,7 @@
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_relaxation.h>
 
 #include <cmath>
 #include <limits>
@@ -175,6 +177,67 @@ void analytic_cases()
   SMP_CHECK(off >= -1e-12 && off <= 1. - std::cos(CGAL_PI / 80.) + 1e-12, "half cylinder: " << off << " inside");
 }
 
+// The relaxation on a plane whose domain is squeezed along x (u = x^2, v = y): the vertices of a
+// jittered grid settle where the triangles have even areas on the surface, whatever the
+// squeeze (a rule that evens the areas in the domain, or weighs centroids of the domain by the
+// surface areas alone, leaves the triangles larger where the domain is squeezed).
+void relaxation_in_a_squeezed_domain()
+{
+  typedef SMP::internal::Lifted_mesh Lifted_mesh;
+  typedef Lifted_mesh::Point Point;
+  const int n = 24;
+  Lifted_mesh mesh;
+  std::vector<SMP::internal::Vec2> uv;
+  std::vector<Lifted_mesh::Vertex_index> grid;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i) {
+      // interior vertices moved by up to a quarter of the spacing, the same on every run
+      const bool inner = i > 0 && i < n && j > 0 && j < n;
+      const double dx = inner ? 0.25 * std::sin(12.9898 * i + 78.233 * j) : 0.;
+      const double dy = inner ? 0.25 * std::cos(39.3467 * i + 11.135 * j) : 0.;
+      const double x = (i + dx) / n, y = (j + dy) / n;
+      grid.push_back(mesh.add_vertex(Point(x, y, 0)));
+      uv.push_back({{x * x, y}});
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const auto at = [&](int a, int b) { return grid[std::size_t(b * (n + 1) + a)]; };
+      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  // mean surface area of the triangles left of x = 1/4 over the one right of x = 3/4
+  const auto left_over_right = [&mesh]() {
+    double sum[2] = {0., 0.};
+    int count[2] = {0, 0};
+    for(auto f : mesh.faces()) {
+      const auto h = mesh.halfedge(f);
+      const Point &a = mesh.point(mesh.source(h)), &b = mesh.point(mesh.target(h)), &c = mesh.point(mesh.target(mesh.next(h)));
+      const double x = (a.x() + b.x() + c.x()) / 3.;
+      if(x < 0.25 || x > 0.75) {
+        sum[x > 0.75] += std::sqrt(CGAL::squared_area(a, b, c));
+        ++count[x > 0.75];
+      }
+    }
+    return (sum[0] / count[0]) / (sum[1] / count[1]);
+  };
+  const double before = left_over_right();
+  SMP::internal::relax_in_domain(mesh, uv, 100, 1., [&](Lifted_mesh::Vertex_index v, const SMP::internal::Vec2& q) {
+    if(!(q[0] >= 0. && q[0] <= 1. && q[1] >= 0. && q[1] <= 1.))
+      return false;
+    mesh.point(v) = Point(std::sqrt(q[0]), q[1], 0);
+    return true;
+  });
+  const double after = left_over_right();
+  std::size_t off = 0;
+  for(auto v : mesh.vertices())
+    off += std::abs(uv[std::size_t(v)][0] - CGAL::square(mesh.point(v).x())) > 1e-12 || uv[std::size_t(v)][1] != mesh.point(v).y();
+  std::cout << "relaxation in a squeezed domain: triangles left of x = 1/4 over right of x = 3/4: " << before << " before, "
+            << after << " after" << std::endl;
+  SMP_CHECK(off == 0, "relaxation in a squeezed domain: " << off << " vertices off their domain points");
+  SMP_CHECK(std::abs(after - 1.) < 0.1, "relaxation in a squeezed domain: the triangles left of x = 1/4 are "
+            << after << " times as large as those right of x = 3/4 (" << before << " before)");
+}
+
 // The bundled meshes: a disk with holes, a head; and the paper's claim on the head, where U^0
 // is far from area-preserving: {U^0, U^opt} spreads the areas more evenly than {U^0} at a
 // Hausdorff distance no larger.
@@ -259,6 +322,7 @@ void bad_input()
 int run_test(int, char**)
 {
   analytic_cases();
+  relaxation_in_a_squeezed_domain();
   bundled_meshes();
   bad_input();
   return smp_test::summary();

@@ -64,8 +64,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///     \cgalParamDefault{`Remeshing_pair::U0_UOPT`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_relaxation_steps}
-///     \cgalParamDescription{steps moving each interior vertex, in U', to the centroid of its
-///       triangles weighted by their surface areas (evens out the areas, widens the angles)}
+///     \cgalParamDescription{steps moving each interior vertex to the centroid of its triangles
+///       on the surface, carried to U' (evens out the areas, widens the angles)}
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd
