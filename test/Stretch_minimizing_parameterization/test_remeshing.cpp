@@ -4,8 +4,8 @@
 // remesh_with_parameterizations(): the new mesh is a valid oriented triangle mesh on the input
 // surface with the input's border loops, about the number of vertices asked for, on analytic
 // cases (a planar disk, a cylinder patch) and the bundled meshes; the relaxation evens the surface
-// areas where the domain is squeezed; {U^0, U^opt} samples more
-// evenly than {U^0}; bad input gets an error and leaves the output alone.
+// areas where the domain is squeezed, and the raster's resolution follows the squeeze of U'';
+// {U^0, U^opt} samples more evenly than {U^0}; bad input gets an error and leaves the output alone.
 
 #include "smp_test_util.h"
 #include "smp_test_mesh.h"
@@ -238,6 +238,39 @@ void relaxation_in_a_squeezed_domain()
             << after << " times as large as those right of x = 3/4 (" << before << " before)");
 }
 
+// The raster of U'': 16 cells a sample where U'' keeps areas (a unit square laid out as is, or
+// scaled: only ratios count); where U'' squeezes half of the square 50 times, as many more as
+// keep that half at about one sample a cell.
+void raster_resolution()
+{
+  SMP::internal::Flat_triangles square;
+  const int n = 10;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      square.xyz.push_back({{double(i) / n, double(j) / n, 0.}});
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const int a = j * (n + 1) + i;
+      square.tri.push_back({{a, a + 1, a + n + 2}});
+      square.tri.push_back({{a, a + n + 2, a + n + 1}});
+    }
+  std::vector<SMP::internal::Vec2> same, scaled, squeezed;
+  for(const auto& p : square.xyz) {
+    same.push_back({{p[0], p[1]}});
+    scaled.push_back({{3. * p[0], 3. * p[1]}});
+    squeezed.push_back({{p[0] <= 0.5 ? p[0] : 0.5 + (p[0] - 0.5) / 50., p[1]}});
+  }
+  const std::size_t samples = 10000;
+  const std::size_t cells_same = SMP::internal::raster_cells(square, same, samples);
+  const std::size_t cells_scaled = SMP::internal::raster_cells(square, scaled, samples);
+  SMP_CHECK(cells_same == 16 * samples && cells_scaled == 16 * samples,
+            "raster of an area-preserving map: " << cells_same << " and " << cells_scaled << " cells for " << samples << " samples");
+  // densities 1 and 50 over uv areas 1/2 and 1/100: the mean is 1 / 0.51, the squeezed half 50
+  const double expected = 50. * 0.51 * double(samples);
+  const double cells = double(SMP::internal::raster_cells(square, squeezed, samples));
+  SMP_CHECK(std::abs(cells - expected) <= 1. + 1e-6 * expected, "raster of a squeezed map: " << cells << " cells, " << expected << " expected");
+}
+
 // The bundled meshes: a disk with holes, a head; and the paper's claim on the head, where U^0
 // is far from area-preserving: {U^0, U^opt} spreads the areas more evenly than {U^0} at a
 // Hausdorff distance no larger.
@@ -323,6 +356,7 @@ int run_test(int, char**)
 {
   analytic_cases();
   relaxation_in_a_squeezed_domain();
+  raster_resolution();
   bundled_meshes();
   bad_input();
   return smp_test::summary();

@@ -18,6 +18,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -67,6 +68,38 @@ struct Density_raster
 
   Vec2 center(int x, int y) const { return {{origin[0] + (x + 0.5) * cell, origin[1] + (y + 0.5) * cell}}; }
 };
+
+// The number of raster cells for sampling `samples` points through `uv`: 16 a sample where `uv`
+// keeps areas (error diffusion spreads samples less evenly at much smaller fractions of a
+// sample a cell), and as many as keep the densest tenth of the surface (by area) at no more
+// than about one sample a cell, where `uv` squeezes it; within [2^16, 2^23].
+inline std::size_t raster_cells(const Flat_triangles& m, const std::vector<Vec2>& uv, std::size_t samples)
+{
+  std::vector<std::pair<double, double> > density; // (surface area / uv area, surface area) per triangle
+  double area_3d = 0., area_uv = 0.;
+  for(const Triangle& t : m.tri) {
+    const double a3 = triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
+    const double a2 = 0.5 * std::abs(twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]));
+    if(a3 > 0. && a2 > 0. && std::isfinite(a3 / a2)) {
+      density.emplace_back(a3 / a2, a3);
+      area_3d += a3;
+      area_uv += a2;
+    }
+  }
+  double per_sample = 16.;
+  if(!density.empty()) {
+    std::sort(density.begin(), density.end());
+    double below = 0., high = density.back().first; // the density below which 90% of the area is
+    for(const auto& d : density)
+      if((below += d.second) >= 0.9 * area_3d) {
+        high = d.first;
+        break;
+      }
+    per_sample = (std::max)(per_sample, high / (area_3d / area_uv));
+  }
+  const double cells = per_sample * double(samples);
+  return std::size_t((std::min)(double(std::size_t(1) << 23), (std::max)(double(std::size_t(1) << 16), cells)));
+}
 
 // Rasterizes the triangles `m.tri` laid out by `uv` on about `cells` cells; a triangle flat in
 // the plane holds no cell, one flat in space holds cells without area.

@@ -218,7 +218,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   tree.accelerate_distance_queries();
   const double band2 = 0.25 * spacing * spacing;
   const std::size_t wanted = settings.vertices - on_border.size();
-  const std::size_t cells = (std::min)(std::size_t(1) << 23, (std::max)(std::size_t(1) << 16, 64 * settings.vertices));
+  const std::size_t cells = raster_cells(m, in.sampling_uv, settings.vertices);
   const Density_raster raster = rasterize_density(m, in.sampling_uv, cells);
   if(!(raster.total_area > 0.)) {
     r.status = ERROR_WRONG_PARAMETER;
