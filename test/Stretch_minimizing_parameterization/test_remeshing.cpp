@@ -9,6 +9,7 @@
 
 #include "smp_test_util.h"
 #include "smp_test_mesh.h"
+#include "flat_grid.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/Surface_mesh_parameterization/internal/aabb_tree_compatibility.h>
@@ -26,6 +27,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -185,26 +187,16 @@ void relaxation_in_a_squeezed_domain()
 {
   typedef SMP::internal::Lifted_mesh Lifted_mesh;
   typedef Lifted_mesh::Point Point;
-  const int n = 24;
+  std::mt19937 random(7); // interior vertices moved by up to a quarter of the spacing
+  const smp_test::Flat_grid grid = smp_test::make_flat_grid(24, 0.25, random);
   Lifted_mesh mesh;
   std::vector<SMP::internal::Vec2> uv;
-  std::vector<Lifted_mesh::Vertex_index> grid;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i) {
-      // interior vertices moved by up to a quarter of the spacing, the same on every run
-      const bool inner = i > 0 && i < n && j > 0 && j < n;
-      const double dx = inner ? 0.25 * std::sin(12.9898 * i + 78.233 * j) : 0.;
-      const double dy = inner ? 0.25 * std::cos(39.3467 * i + 11.135 * j) : 0.;
-      const double x = (i + dx) / n, y = (j + dy) / n;
-      grid.push_back(mesh.add_vertex(Point(x, y, 0)));
-      uv.push_back({{x * x, y}});
-    }
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const auto at = [&](int a, int b) { return grid[std::size_t(b * (n + 1) + a)]; };
-      mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
-      mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
-    }
+  for(const auto& p : grid.m.xyz) {
+    mesh.add_vertex(Point(p[0], p[1], 0));
+    uv.push_back({{p[0] * p[0], p[1]}});
+  }
+  for(const auto& t : grid.m.tri)
+    mesh.add_face(Lifted_mesh::Vertex_index(t[0]), Lifted_mesh::Vertex_index(t[1]), Lifted_mesh::Vertex_index(t[2]));
   // mean surface area of the triangles left of x = 1/4 over the one right of x = 3/4
   const auto left_over_right = [&mesh]() {
     double sum[2] = {0., 0.};
@@ -243,17 +235,8 @@ void relaxation_in_a_squeezed_domain()
 // keep that half at about one sample a cell.
 void raster_resolution()
 {
-  SMP::internal::Flat_triangles square;
-  const int n = 10;
-  for(int j = 0; j <= n; ++j)
-    for(int i = 0; i <= n; ++i)
-      square.xyz.push_back({{double(i) / n, double(j) / n, 0.}});
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i) {
-      const int a = j * (n + 1) + i;
-      square.tri.push_back({{a, a + 1, a + n + 2}});
-      square.tri.push_back({{a, a + n + 2, a + n + 1}});
-    }
+  std::mt19937 unused;
+  const SMP::internal::Flat_triangles square = smp_test::make_flat_grid(10, 0., unused).m;
   std::vector<SMP::internal::Vec2> same, scaled, squeezed;
   for(const auto& p : square.xyz) {
     same.push_back({{p[0], p[1]}});

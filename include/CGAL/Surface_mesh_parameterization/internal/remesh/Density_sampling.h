@@ -69,6 +69,13 @@ struct Density_raster
   Vec2 center(int x, int y) const { return {{origin[0] + (x + 0.5) * cell, origin[1] + (y + 0.5) * cell}}; }
 };
 
+// The surface area and the uv area of triangle `t` of `m` laid out by `uv`.
+inline std::array<double, 2> triangle_areas(const Flat_triangles& m, const std::vector<Vec2>& uv, const Triangle& t)
+{
+  return {{triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]),
+           0.5 * std::abs(twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]))}};
+}
+
 // The number of raster cells for sampling `samples` points through `uv`: 16 a sample where `uv`
 // keeps areas (error diffusion spreads samples less evenly at much smaller fractions of a
 // sample a cell), and as many as keep the densest tenth of the surface (by area) at no more
@@ -78,12 +85,11 @@ inline std::size_t raster_cells(const Flat_triangles& m, const std::vector<Vec2>
   std::vector<std::pair<double, double> > density; // (surface area / uv area, surface area) per triangle
   double area_3d = 0., area_uv = 0.;
   for(const Triangle& t : m.tri) {
-    const double a3 = triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
-    const double a2 = 0.5 * std::abs(twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]));
-    if(a3 > 0. && a2 > 0. && std::isfinite(a3 / a2)) {
-      density.emplace_back(a3 / a2, a3);
-      area_3d += a3;
-      area_uv += a2;
+    const std::array<double, 2> a = triangle_areas(m, uv, t);
+    if(a[0] > 0. && a[1] > 0. && std::isfinite(a[0] / a[1])) {
+      density.emplace_back(a[0] / a[1], a[0]);
+      area_3d += a[0];
+      area_uv += a[1];
     }
   }
   double per_sample = 16.;
@@ -127,11 +133,10 @@ inline Density_raster rasterize_density(const Flat_triangles& m, const std::vect
   const double cell_area = r.cell * r.cell;
   for(std::size_t f = 0; f < m.tri.size(); ++f) {
     const Vec2 &a = uv[std::size_t(m.tri[f][0])], &b = uv[std::size_t(m.tri[f][1])], &c = uv[std::size_t(m.tri[f][2])];
-    const double area_uv = 0.5 * std::abs(twice_signed_area(a, b, c));
-    if(!(area_uv > 0.))
+    const std::array<double, 2> area = triangle_areas(m, uv, m.tri[f]);
+    if(!(area[1] > 0.))
       continue;
-    const double ratio = triangle_area(m.xyz[std::size_t(m.tri[f][0])], m.xyz[std::size_t(m.tri[f][1])],
-                                       m.xyz[std::size_t(m.tri[f][2])]) / area_uv;
+    const double ratio = area[0] / area[1];
     const auto first = [&](double v, double o) { return (std::max)(0, int(std::floor((v - o) / r.cell - 0.5))); };
     const int x0 = first((std::min)({a[0], b[0], c[0]}), lo[0]), y0 = first((std::min)({a[1], b[1], c[1]}), lo[1]);
     const int x1 = (std::min)(r.width - 1, int(std::ceil(((std::max)({a[0], b[0], c[0]}) - lo[0]) / r.cell)));

@@ -40,6 +40,7 @@ void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double
   };
   // the normals of the triangles around `v` on the surface (not normalized)
   std::vector<Vec3> before, after;
+  std::vector<double> fan_area; // the surface areas of the triangles around a vertex, in turn
   const auto fan_normals = [&](vertex_descriptor v, std::vector<Vec3>& normals) {
     normals.clear();
     for(const auto f : faces_around_target(mesh.halfedge(v), mesh)) {
@@ -56,13 +57,14 @@ void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double
         continue;
       Vec3 sum = {{0., 0., 0.}};
       double weight = 0.;
+      fan_area.clear();
       for(const auto f : faces_around_target(mesh.halfedge(v), mesh)) {
         const auto h = mesh.halfedge(f);
         const Vec3 a = at(mesh.source(h)), b = at(mesh.target(h)), c = at(mesh.target(mesh.next(h)));
-        const double w = triangle_area(a, b, c);
+        fan_area.push_back(triangle_area(a, b, c));
         for(int i = 0; i < 3; ++i)
-          sum[i] += w * (a[i] + b[i] + c[i]) / 3.;
-        weight += w;
+          sum[i] += fan_area.back() * (a[i] + b[i] + c[i]) / 3.;
+        weight += fan_area.back();
       }
       if(!(weight > 0.))
         continue;
@@ -71,10 +73,11 @@ void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double
       // the triangle's plane), applied to that triangle's corners in the domain; a centroid in
       // none of them (a fan folded sharply, as at the tip of a horn) leaves the vertex where it is
       double inside = -HUGE_VAL;
+      std::size_t n = 0;
       for(const auto f : faces_around_target(mesh.halfedge(v), mesh)) {
         const auto h = mesh.halfedge(f);
         const vertex_descriptor k[3] = {mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))};
-        if(!(triangle_area(at(k[0]), at(k[1]), at(k[2])) > 0.))
+        if(!(fan_area[n++] > 0.))
           continue;
         const std::array<double, 3> w =
             Polygon_mesh_processing::barycentric_coordinates(mesh.point(k[0]), mesh.point(k[1]), mesh.point(k[2]), centroid);
