@@ -488,6 +488,63 @@ void test_supernodal_newton()
   }
 }
 
+// The split systems factored by CHOLMOD's supernodal LL^T (forced from one row on) when CHOLMOD
+// is used, else by the simplicial LDL^T still (Eigen's SparseLU is not taken for them): the same
+// descent as the simplicial factorization's, to rounding.
+void test_supernodal_split()
+{
+  Start s;
+  if(!load_start("three_peaks.off", s)) return;
+  SI::Sander_polish_settings st;
+  st.direction = SI::Sander_polish_direction::SPLIT_NEWTON;
+  st.max_iterations = 8;
+  std::vector<Vec2> simplicial_uv = s.uv;
+  SI::Sander_energy_polisher<Counting_solver> simplicial;
+  const SI::Sander_polish_result reference = simplicial.polish(s.m, s.guard, s.fixed, s.border, simplicial_uv, st);
+  SMP_CHECK(reference.status == SI::Sander_polish_status::OK && reference.iterations > 0 &&
+            !simplicial.split_solver(0).supernodal() && !simplicial.split_solver(1).supernodal(),
+            "supernodal split: the simplicial reference " << reference.message);
+  st.split_supernodal_rows = 1;
+  std::vector<Vec2> uv = s.uv;
+  SI::Sander_energy_polisher<Counting_solver> supernodal;
+  const SI::Sander_polish_result r = supernodal.polish(s.m, s.guard, s.fixed, s.border, uv, st);
+  SMP_CHECK(r.status == SI::Sander_polish_status::OK && supernodal.split_solver(0).supernodal() == Counting_solver::cholmod &&
+            supernodal.split_solver(1).supernodal() == Counting_solver::cholmod,
+            "supernodal split (CHOLMOD used: " << Counting_solver::cholmod << "): " << r.message);
+  SMP_CHECK(r.iterations == reference.iterations && std::abs(r.l2_after - reference.l2_after) < 1e-9 * reference.l2_after,
+            "supernodal split: L2 " << r.l2_after << " in " << r.iterations << " steps, simplicial "
+            << reference.l2_after << " in " << reference.iterations);
+  double largest = 0.;
+  for(std::size_t v = 0; v < uv.size(); ++v)
+    largest = (std::max)(largest, std::hypot(uv[v][0] - simplicial_uv[v][0], uv[v][1] - simplicial_uv[v][1]));
+  SMP_CHECK(largest < 1e-8, "supernodal split: uv off the simplicial descent by " << largest);
+}
+
+// The faces' terms are computed on several threads and added in their order: every direction
+// polishes to the same map, bit for bit, on one thread and on three (mushroom's faces are
+// enough for two blocks of work).
+void test_threads()
+{
+  Start s;
+  if(!load_start("mushroom.off", s)) return;
+  typedef SI::Sander_polish_direction Direction;
+  for(const Direction direction : {Direction::NEWTON, Direction::SPLIT_NEWTON, Direction::DIRICHLET_PROXY}) {
+    SI::Sander_polish_settings st;
+    st.direction = direction;
+    st.free_border = direction == Direction::DIRICHLET_PROXY;
+    st.max_iterations = 4;
+    std::vector<Vec2> one = s.uv, three = s.uv;
+    st.threads = 1;
+    const SI::Sander_polish_result r1 = SI::Sander_energy_polisher<>().polish(s.m, s.guard, s.fixed, s.border, one, st);
+    st.threads = 3;
+    const SI::Sander_polish_result r3 = SI::Sander_energy_polisher<>().polish(s.m, s.guard, s.fixed, s.border, three, st);
+    SMP_CHECK(r1.status == SI::Sander_polish_status::OK && r1.iterations > 0 && r3.iterations == r1.iterations &&
+              one == three && r1.energy_after == r3.energy_after,
+              "threads (direction " << int(direction) << "): " << r1.iterations << " and " << r3.iterations
+              << " steps, energy " << r1.energy_after << " and " << r3.energy_after << " " << r1.message);
+  }
+}
+
 int run_test(int, char**)
 {
   if(!smp_test::sanitized)
@@ -501,6 +558,8 @@ int run_test(int, char**)
   test_flat_slivers();
   test_near_isometry();
   test_supernodal_newton();
+  test_supernodal_split();
+  test_threads();
   return smp_test::summary();
 }
 

@@ -76,8 +76,8 @@ struct Sander_polish_settings
   // that many times the tolerance (fewer steps at the start): a step cut short by a fold may
   // gain little where the next ones gain again, which one step alone cannot tell
   unsigned int tolerance_window = 1;
-  unsigned int threads = 1;   // of the stretch measured after each step and of the two systems of
-                              // SPLIT_NEWTON (the result does not depend on it)
+  unsigned int threads = 1;   // of the faces' terms, of the stretch measured after each step and of
+                              // the two systems of SPLIT_NEWTON (the result does not depend on it)
   // the order in which the proxy and the split systems eliminate the vertices (rank per vertex,
   // see vertex_order.h), shared by the calls on one mesh; null: ordered here
   const std::vector<int>* vertex_rank = nullptr;
@@ -86,6 +86,10 @@ struct Sander_polish_settings
   std::size_t newton_supernodal_rows = std::size_t(Sander_vertex_solver::blocked_supernodal_rows);
   // whether that factorization may call BLAS (see Sander_vertex_solver::set_supernodal_rows())
   bool supernodal_blas = true;
+  // SPLIT_NEWTON: from this many rows on, the two systems are factored by CHOLMOD's supernodal
+  // LL^T when CHOLMOD is used, both at once; below, or without CHOLMOD, by the simplicial LDL^T
+  // (Eigen's SparseLU, the supernodal factorization without BLAS, falls behind it on these)
+  std::size_t split_supernodal_rows = std::size_t(Sander_vertex_solver::default_supernodal_rows);
 };
 
 // Whether a start of normalized L2 stretch `l2` is taken as it is (no step) by a polish that
@@ -139,6 +143,11 @@ class Sander_energy_polisher
 public:
   // Relative eigenvalue floor of the per-face Hessians.
   static constexpr double eigenvalue_floor = 1e-8;
+  // The energy faces whose terms (energy, gradient, Hessian block) are computed side by side
+  // before they are added in order, and the fewest of them a thread takes (they cost far more
+  // than the items of parallel_grain).
+  static constexpr std::size_t face_block = 16384;
+  static constexpr std::size_t face_grain = 2048;
   // Fewest moving vertices for which the two split systems are factored on two threads: below,
   // starting a thread at every step costs more than it saves (on a mesh of a few vertices, many
   // times the rest of the step); the value is near the crossover found by timing both thread
@@ -173,6 +182,7 @@ public:
     std::string why;
     if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
       return fail(Sander_polish_status::BAD_START, why);
+    m_threads = (std::max)(settings.threads, 1u);
     m_solver.set_supernodal_rows(Eigen::Index(settings.newton_supernodal_rows), settings.supernodal_blas);
     m_solver.set_paired_rows(true); // u and v of an unknown: rows 2k and 2k + 1
     if(settings.direction != Sander_polish_direction::NEWTON || 2 * m_dofs >= settings.newton_supernodal_rows)
@@ -232,6 +242,10 @@ public:
           return fail(Sander_polish_status::SOLVER_FAILED, "the proxy could not be solved");
         Eigen::Map<Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> >(m_p.data(), Eigen::Index(m_dofs), 2) = m_pp;
       } else if(m_split) {
+        if(!factored)
+          for(VertexSolver& solver : m_split_solver)
+            solver.set_supernodal_rows(VertexSolver::cholmod ? Eigen::Index(settings.split_supernodal_rows)
+                                                             : (std::numeric_limits<Eigen::Index>::max)());
         if(!solve_split(!factored, settings.threads))
           return fail(Sander_polish_status::SOLVER_FAILED, "the factorization of the Newton system failed");
         factored = true;
@@ -297,6 +311,8 @@ public:
 
   // the solver of the Newton system, as the last polish left it
   const VertexSolver& newton_solver() const { return m_solver; }
+  // the solver of the u (0) or the v (1) system of SPLIT_NEWTON, as the last polish left it
+  const VertexSolver& split_solver(std::size_t c) const { return m_split_solver[c]; }
 
   // Whether polish() would take this start (its status not BAD_START): the checks alone, no step.
   bool accepts(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<char>& fixed,
@@ -327,6 +343,16 @@ private:
     Triangle v;
     Eigen::Matrix<double, 3, 2> D;
     double area;
+  };
+
+  // What one energy face adds to energy_of(), assemble() or max_step().
+  struct Face_terms
+  {
+    double energy = 0.;
+    bool folded = false;
+    double fold_step = HUGE_VAL;             // along m_dir, see first_fold()
+    Eigen::Matrix<double, 6, 1> gradient;    // with respect to (u1, v1, u2, v2, u3, v3)
+    Eigen::Matrix<double, 6, 6> hessian;     // projected
   };
 
   // Checks the start, classifies the faces, numbers the unknowns and builds the sparse pattern.
@@ -553,12 +579,31 @@ private:
 
   // E * A of `x` (internal coordinates, one entry per vertex), the scale-free energy of the
   // area-term mode.
-  double product_of(const std::vector<Vec2>& x) const
+  double product_of(const std::vector<Vec2>& x)
   {
-    double e = 0.;
-    for(const Energy_face& f : m_energy)
-      e += sander_face_energy(jacobian(f, x), f.area, 0.);
-    return e * area_of(x);
+    return energy_of(x, 0.) * area_of(x);
+  }
+
+  // Calls `term(k, m_terms[i])` for the energy faces k, a block of them at a time on m_threads
+  // threads, then `add(k, m_terms[i])` for the faces of the block in order: the sums are those
+  // of one thread, bit for bit. Stops after a block where `add` returns false.
+  template <typename Term, typename Add>
+  void for_energy_faces(const Term& term, const Add& add)
+  {
+    const std::size_t n = m_energy.size();
+    m_terms.resize((std::min)(n, face_block));
+    for(std::size_t first = 0; first < n; first += face_block) {
+      const std::size_t count = (std::min)(face_block, n - first);
+      parallel_for(count, m_threads, face_grain, [&](std::size_t b, std::size_t e) {
+        for(std::size_t i = b; i < e; ++i)
+          term(first + i, m_terms[i]);
+      });
+      bool go_on = true;
+      for(std::size_t i = 0; i < count; ++i)
+        go_on = add(first + i, m_terms[i]) && go_on;
+      if(!go_on)
+        return;
+    }
   }
 
   // Objective at x + t * dir, written to m_trial; +inf if a face folds.
@@ -570,14 +615,29 @@ private:
     for(const Triangle& g : m_guard)
       if(!(twice_signed_area(m_trial[g[0]], m_trial[g[1]], m_trial[g[2]]) > 0.))
         return HUGE_VAL;
+    return energy_of(m_trial, m_mu);
+  }
+
+  // The energy of the faces at `x` with the area term `mu`; +inf if a face folds.
+  double energy_of(const std::vector<Vec2>& x, double mu)
+  {
     double E = 0.;
-    for(const Energy_face& f : m_energy) {
-      const Eigen::Matrix2d J = jacobian(f, m_trial);
-      if(!(J.determinant() > 0.))
-        return HUGE_VAL;
-      E += sander_face_energy(J, f.area, m_mu);
-    }
-    return E;
+    bool folded = false;
+    for_energy_faces(
+      [this, &x, mu](std::size_t k, Face_terms& out) {
+        const Energy_face& f = m_energy[k];
+        const Eigen::Matrix2d J = jacobian(f, x);
+        out.folded = !(J.determinant() > 0.);
+        if(!out.folded)
+          out.energy = sander_face_energy(J, f.area, mu);
+      },
+      [&](std::size_t, const Face_terms& out) {
+        folded = folded || out.folded;
+        if(!folded)
+          E += out.energy;
+        return !folded;
+      });
+    return folded ? HUGE_VAL : E;
   }
 
   // Gradient at x, and the projected Hessian if asked.
@@ -590,25 +650,33 @@ private:
     } else if(hessian) {
       std::fill(m_H.valuePtr(), m_H.valuePtr() + m_H.nonZeros(), 0.);
     }
-    Eigen::Vector4d gJ;
-    Eigen::Matrix4d HJ;
-    Eigen::Matrix<double, 4, 6> B;
-    Eigen::Matrix<double, 6, 6> Hx;
-    for(std::size_t k = 0; k < m_energy.size(); ++k) {
-      const Energy_face& f = m_energy[k];
-      const Eigen::Matrix2d J = jacobian(f, m_x);
-      sander_face_energy(J, f.area, m_mu, &gJ);
-      for(int a = 0; a < 3; ++a) // d vec(J) / d(u_a, v_a), from J(r, c) = sum_a x(2a + r) D(a, c)
-        for(int r = 0; r < 2; ++r) {
-          const int i = index(f.v[a], r);
-          if(i >= 0) m_g(i) += gJ(2 * r) * f.D(a, 0) + gJ(2 * r + 1) * f.D(a, 1);
-        }
-      if(!hessian) continue;
-      jacobian_operator(f, B);
-      HJ = sander_face_projected_hessian(J, f.area, m_mu, eigenvalue_floor);
-      Hx.noalias() = B.transpose() * HJ * B;
-      add_block(k, Hx);
-    }
+    for_energy_faces(
+      [this, hessian](std::size_t k, Face_terms& out) {
+        const Energy_face& f = m_energy[k];
+        const Eigen::Matrix2d J = jacobian(f, m_x);
+        Eigen::Vector4d gJ;
+        sander_face_energy(J, f.area, m_mu, &gJ);
+        for(int a = 0; a < 3; ++a) // d vec(J) / d(u_a, v_a), from J(r, c) = sum_a x(2a + r) D(a, c)
+          for(int r = 0; r < 2; ++r)
+            out.gradient(2 * a + r) = gJ(2 * r) * f.D(a, 0) + gJ(2 * r + 1) * f.D(a, 1);
+        if(!hessian)
+          return;
+        Eigen::Matrix<double, 4, 6> B;
+        jacobian_operator(f, B);
+        const Eigen::Matrix4d HJ = sander_face_projected_hessian(J, f.area, m_mu, eigenvalue_floor);
+        out.hessian.noalias() = B.transpose() * HJ * B;
+      },
+      [this, hessian](std::size_t k, const Face_terms& out) {
+        const Energy_face& f = m_energy[k];
+        for(int a = 0; a < 3; ++a)
+          for(int r = 0; r < 2; ++r) {
+            const int i = index(f.v[a], r);
+            if(i >= 0) m_g(i) += out.gradient(2 * a + r);
+          }
+        if(hessian)
+          add_block(k, out.hessian);
+        return true;
+      });
   }
 
   // The proxy, one row per moving vertex (it acts on u and v alike): the Hessian of the
@@ -668,10 +736,14 @@ private:
   }
 
   // Largest t in (0, inf] with every face of a free vertex positively oriented on [0, t).
-  double max_step() const
+  double max_step()
   {
     double t_max = HUGE_VAL;
-    for(const Energy_face& f : m_energy) t_max = (std::min)(t_max, first_fold(m_x, m_dir, f.v));
+    for_energy_faces([this](std::size_t k, Face_terms& out) { out.fold_step = first_fold(m_x, m_dir, m_energy[k].v); },
+                     [&t_max](std::size_t, const Face_terms& out) {
+                       t_max = (std::min)(t_max, out.fold_step);
+                       return true;
+                     });
     for(const Triangle& g : m_guard) t_max = (std::min)(t_max, first_fold(m_x, m_dir, g));
     return t_max;
   }
@@ -729,6 +801,8 @@ private:
 
   std::vector<char> m_fixed;
   std::vector<Energy_face> m_energy;
+  std::vector<Face_terms> m_terms;         // of a block of energy faces
+  unsigned int m_threads = 1;
   std::vector<Triangle> m_guard;           // faces without energy that must stay positive
   std::vector<int> m_border;
   std::vector<int> m_dof;                  // vertex -> unknown, -1 if it does not move
@@ -747,7 +821,9 @@ private:
   Eigen::VectorXd m_g, m_p;
   Eigen::Matrix<double, Eigen::Dynamic, 2> m_rhs, m_pp; // proxy solve, u and v columns
   VertexSolver m_solver{true}; // the Newton system: projected Hessians, definite
-  VertexSolver m_proxy_solver, m_split_solver[2];
+  VertexSolver m_proxy_solver;
+  // the split systems: positive definite with the fixed border that they are used with
+  VertexSolver m_split_solver[2] = {VertexSolver(true), VertexSolver(true)};
   Flat_stretch m_stretch;
 };
 

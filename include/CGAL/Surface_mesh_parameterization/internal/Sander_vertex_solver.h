@@ -185,6 +185,12 @@ public:
   // system), fill more: the supernodal factorizations overtake the simplicial one at far fewer
   // rows, and leave it ever further behind above (the benchmark's blocked_solvers measures it).
   static constexpr Eigen::Index blocked_supernodal_rows = 60000;
+  // whether the supernodal factorization of the definite systems is CHOLMOD's (else Eigen's SparseLU)
+#if defined(CGAL_SMP_USE_CHOLMOD)
+  static constexpr bool cholmod = true;
+#else
+  static constexpr bool cholmod = false;
+#endif
 
   // `definite`: the systems are positive definite, so a supernodal method may factor those of
   // `supernodal_rows` rows or more (an LL^T refuses the semidefinite systems whose smallest
