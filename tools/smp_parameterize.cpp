@@ -99,7 +99,7 @@ Options parse(int argc, char** argv)
      "circle, natural (LSCM's border)")
     ("preset", po::value(&o.preset)->value_name("P"),
      "paper (default: the paper's method) or lowest (clamped cotangent start, edge update, descent "
-     "steps: lower stretch for 1.4-2.9 times the time up to 207k vertices, 3.5 at 829k)")
+     "steps: lower stretch for a few times the time; the manual gives the figures)")
     ("start", po::value(&o.start)->value_name("S"), "start weights of u0/u1/uopt: floater, mvc or cot (clamped cotangent)")
     ("update", po::value(&o.update)->value_name("U"), "stretch that divides the weights: vertex, symmetric or edge")
     ("rule", po::value(&o.rule)->value_name("R"), "when a step does not lower the stretch: stop or halve (eta)")
