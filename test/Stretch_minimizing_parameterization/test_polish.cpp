@@ -452,72 +452,48 @@ void test_near_isometry()
 
 // The Newton system factored by the supernodal method (forced from one row on), its rows in a
 // vertex order given by the caller, or in a minimum degree order, through BLAS (CHOLMOD's, when
-// it is used) or not (Eigen's SparseLU): the same polish as the simplicial factorization's, to
-// rounding.
-void test_supernodal_newton()
+// it is used) or not (Eigen's SparseLU); and the split systems forced from one row on, factored
+// by CHOLMOD's LL^T when CHOLMOD is used, else by the simplicial LDL^T still (Eigen's SparseLU is
+// not taken for them): the same polish as the simplicial factorization's, to rounding.
+void test_supernodal(SI::Sander_polish_direction direction)
 {
+  const bool split = direction == SI::Sander_polish_direction::SPLIT_NEWTON;
   Start s;
   if(!load_start("three_peaks.off", s)) return;
   SI::Sander_polish_settings st;
-  st.direction = SI::Sander_polish_direction::NEWTON;
+  st.direction = direction;
   st.max_iterations = 8;
+  // whether the last polish of `p` factored its systems by a supernodal method
+  auto supernodal_used = [split](const SI::Sander_energy_polisher<Counting_solver>& p) {
+    return split ? p.split_solver(0).supernodal() && p.split_solver(1).supernodal() : p.newton_solver().supernodal();
+  };
   std::vector<Vec2> simplicial_uv = s.uv;
   SI::Sander_energy_polisher<Counting_solver> simplicial;
   const SI::Sander_polish_result reference = simplicial.polish(s.m, s.guard, s.fixed, s.border, simplicial_uv, st);
-  SMP_CHECK(reference.status == SI::Sander_polish_status::OK && reference.iterations > 0 &&
-            !simplicial.newton_solver().supernodal(), "supernodal: the simplicial reference " << reference.message);
+  SMP_CHECK(reference.status == SI::Sander_polish_status::OK && reference.iterations > 0 && !supernodal_used(simplicial),
+            "supernodal (split: " << split << "): the simplicial reference " << reference.message);
   std::vector<int> rank(s.m.xyz.size()); // the vertices backwards: any order is valid
   for(std::size_t v = 0; v < rank.size(); ++v) rank[v] = int(rank.size() - 1 - v);
-  for(const int run : {0, 1, 2, 3}) {
+  for(const int run : split ? std::vector<int>{0} : std::vector<int>{0, 1, 2, 3}) {
     const bool given = run % 2 == 1;
-    st.newton_supernodal_rows = 1;
+    st.newton_supernodal_rows = split ? st.newton_supernodal_rows : 1;
+    st.split_supernodal_rows = split ? 1 : st.split_supernodal_rows;
     st.vertex_rank = given ? &rank : nullptr;
     st.supernodal_blas = run < 2;
     std::vector<Vec2> uv = s.uv;
     SI::Sander_energy_polisher<Counting_solver> supernodal;
     const SI::Sander_polish_result r = supernodal.polish(s.m, s.guard, s.fixed, s.border, uv, st);
-    SMP_CHECK(r.status == SI::Sander_polish_status::OK && supernodal.newton_solver().supernodal(),
-              "supernodal (order given: " << given << "): " << r.message);
+    SMP_CHECK(r.status == SI::Sander_polish_status::OK && supernodal_used(supernodal) == (!split || Counting_solver::cholmod),
+              "supernodal (split: " << split << ", order given: " << given << "): " << r.message);
     SMP_CHECK(r.iterations == reference.iterations && std::abs(r.l2_after - reference.l2_after) < 1e-9 * reference.l2_after,
-              "supernodal (order given: " << given << "): L2 " << r.l2_after << " in " << r.iterations
-              << " steps, simplicial " << reference.l2_after << " in " << reference.iterations);
+              "supernodal (split: " << split << ", order given: " << given << "): L2 " << r.l2_after << " in "
+              << r.iterations << " steps, simplicial " << reference.l2_after << " in " << reference.iterations);
     double largest = 0.;
     for(std::size_t v = 0; v < uv.size(); ++v)
       largest = (std::max)(largest, std::hypot(uv[v][0] - simplicial_uv[v][0], uv[v][1] - simplicial_uv[v][1]));
-    SMP_CHECK(largest < 1e-8, "supernodal (order given: " << given << "): uv off the simplicial polish by " << largest);
+    SMP_CHECK(largest < 1e-8, "supernodal (split: " << split << ", order given: " << given
+              << "): uv off the simplicial polish by " << largest);
   }
-}
-
-// The split systems factored by CHOLMOD's supernodal LL^T (forced from one row on) when CHOLMOD
-// is used, else by the simplicial LDL^T still (Eigen's SparseLU is not taken for them): the same
-// descent as the simplicial factorization's, to rounding.
-void test_supernodal_split()
-{
-  Start s;
-  if(!load_start("three_peaks.off", s)) return;
-  SI::Sander_polish_settings st;
-  st.direction = SI::Sander_polish_direction::SPLIT_NEWTON;
-  st.max_iterations = 8;
-  std::vector<Vec2> simplicial_uv = s.uv;
-  SI::Sander_energy_polisher<Counting_solver> simplicial;
-  const SI::Sander_polish_result reference = simplicial.polish(s.m, s.guard, s.fixed, s.border, simplicial_uv, st);
-  SMP_CHECK(reference.status == SI::Sander_polish_status::OK && reference.iterations > 0 &&
-            !simplicial.split_solver(0).supernodal() && !simplicial.split_solver(1).supernodal(),
-            "supernodal split: the simplicial reference " << reference.message);
-  st.split_supernodal_rows = 1;
-  std::vector<Vec2> uv = s.uv;
-  SI::Sander_energy_polisher<Counting_solver> supernodal;
-  const SI::Sander_polish_result r = supernodal.polish(s.m, s.guard, s.fixed, s.border, uv, st);
-  SMP_CHECK(r.status == SI::Sander_polish_status::OK && supernodal.split_solver(0).supernodal() == Counting_solver::cholmod &&
-            supernodal.split_solver(1).supernodal() == Counting_solver::cholmod,
-            "supernodal split (CHOLMOD used: " << Counting_solver::cholmod << "): " << r.message);
-  SMP_CHECK(r.iterations == reference.iterations && std::abs(r.l2_after - reference.l2_after) < 1e-9 * reference.l2_after,
-            "supernodal split: L2 " << r.l2_after << " in " << r.iterations << " steps, simplicial "
-            << reference.l2_after << " in " << reference.iterations);
-  double largest = 0.;
-  for(std::size_t v = 0; v < uv.size(); ++v)
-    largest = (std::max)(largest, std::hypot(uv[v][0] - simplicial_uv[v][0], uv[v][1] - simplicial_uv[v][1]));
-  SMP_CHECK(largest < 1e-8, "supernodal split: uv off the simplicial descent by " << largest);
 }
 
 // The faces' terms are computed on several threads and added in their order: every direction
@@ -557,8 +533,8 @@ int run_test(int, char**)
   test_holes();
   test_flat_slivers();
   test_near_isometry();
-  test_supernodal_newton();
-  test_supernodal_split();
+  test_supernodal(SI::Sander_polish_direction::NEWTON);
+  test_supernodal(SI::Sander_polish_direction::SPLIT_NEWTON);
   test_threads();
   return smp_test::summary();
 }
