@@ -144,8 +144,8 @@ public:
   // Relative eigenvalue floor of the per-face Hessians.
   static constexpr double eigenvalue_floor = 1e-8;
   // The energy faces whose terms (energy, gradient, Hessian block) are computed side by side
-  // before they are added in order, and the fewest of them a thread takes (they cost far more
-  // than the items of parallel_grain).
+  // before they are added in order, and the fewest of them a thread takes (below parallel_grain:
+  // a face's Hessian block costs far more than an item of the iteration's loops).
   static constexpr std::size_t face_block = 16384;
   static constexpr std::size_t face_grain = 2048;
   // Fewest moving vertices for which the two split systems are factored on two threads: below,
