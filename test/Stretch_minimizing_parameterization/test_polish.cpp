@@ -474,10 +474,9 @@ void test_supernodal(SI::Sander_polish_direction direction)
             "supernodal (split: " << split << "): the simplicial reference " << reference.message);
   std::vector<int> rank(s.m.xyz.size()); // the vertices backwards: any order is valid
   for(std::size_t v = 0; v < rank.size(); ++v) rank[v] = int(rank.size() - 1 - v);
+  (split ? st.split_supernodal_rows : st.newton_supernodal_rows) = 1;
   for(const int run : split ? std::vector<int>{0} : std::vector<int>{0, 1, 2, 3}) {
     const bool given = run % 2 == 1;
-    st.newton_supernodal_rows = split ? st.newton_supernodal_rows : 1;
-    st.split_supernodal_rows = split ? 1 : st.split_supernodal_rows;
     st.vertex_rank = given ? &rank : nullptr;
     st.supernodal_blas = run < 2;
     std::vector<Vec2> uv = s.uv;

@@ -213,6 +213,8 @@ public:
     bool factored = false;
     double reported = r.energy_before; // E, or E * A with the area term, after the last step
     std::vector<double> energies(1, reported); // the reported energies of the steps (window > 1)
+    // with the area term: E without it and the uv area A at the current map, measured once a step
+    double pure = E, area = m_area_term ? area_of(m_x) : 0.;
     for(;;) {
       if(r.iterations >= settings.max_iterations) { r.stop = Sander_polish_stop::ITERATION_CAP; break; }
       if(settings.time_budget > 0. && seconds() >= settings.time_budget) {
@@ -221,9 +223,7 @@ public:
       }
 
       if(m_area_term) {
-        m_mu = 0.;
-        const double pure = energy_at(0.);
-        m_mu = pure / area_of(m_x);
+        m_mu = pure / area;
         E = 2. * pure; // G at the current map
       }
       assemble(!proxy);
@@ -281,7 +281,11 @@ public:
       m_x.swap(m_trial);
       const double decrease = E - E_new;
       E = E_new;
-      reported = m_area_term ? product_of(m_x) : E;
+      if(m_area_term) {
+        pure = energy_of(m_x, 0.);
+        area = area_of(m_x);
+      }
+      reported = m_area_term ? pure * area : E;
       ++r.iterations;
 
       bool go_on = true;
@@ -575,13 +579,6 @@ private:
     for(const Energy_face& f : m_energy)
       a += 0.5 * twice_signed_area(x[f.v[0]], x[f.v[1]], x[f.v[2]]);
     return a;
-  }
-
-  // E * A of `x` (internal coordinates, one entry per vertex), the scale-free energy of the
-  // area-term mode.
-  double product_of(const std::vector<Vec2>& x)
-  {
-    return energy_of(x, 0.) * area_of(x);
   }
 
   // Calls `term(k, m_terms[i])` for the energy faces k, a block of them at a time on m_threads
