@@ -98,6 +98,22 @@ public:
   }
 
   std::size_t number_of_units() const { return m_unit_first.size() - 1; }
+  // Whether `triangles` (none twice) hold every triangle of each unit they touch. Charts are
+  // grown, split and cut by whole units: the triangles of a polygon laid out one by one must
+  // not be joined to other charts, which a later cut would grow again by whole units.
+  bool whole_units(const std::vector<std::size_t>& triangles) const
+  {
+    std::vector<std::size_t> units;
+    units.reserve(triangles.size());
+    for(std::size_t t : triangles) units.push_back(m_unit[t]);
+    std::sort(units.begin(), units.end());
+    for(std::size_t i = 0, j = 0; i < units.size(); i = j) {
+      while(j < units.size() && units[j] == units[i]) ++j;
+      if(j - i != m_unit_first[units[i] + 1] - m_unit_first[units[i]])
+        return false;
+    }
+    return true;
+  }
   int chart(std::size_t t) const { return m_chart[t]; }
   int mate(int s) const { return m_mate[s]; }
   bool glued(int s) const { return m_glued[s] != 0; }

@@ -34,22 +34,27 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // per triangle of their union, the most first; a union above the bound is taken back (`g` as it
 // was) and its pair not tried again; the unions tried hold at most as many triangles as the mesh
 // (10^4 at least), so that joining costs about one more flattening of the charts. A joined chart
-// b is emptied into chart a.
+// b is emptied into chart a. Charts that hold part of a polygon (one laid out by triangles) are
+// not joined.
 inline void join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<Chart_map>& charts,
                         const Chart_parameterization_settings& settings, int rounds, unsigned int threads)
 {
   std::set<std::pair<int, int> > failed;
   std::size_t budget = (std::max)(m.vertex.size(), std::size_t(10000));
+  // a union of two joinable charts is joinable: found once
+  std::vector<char> joinable(charts.size());
+  for(std::size_t c = 0; c < charts.size(); ++c)
+    joinable[c] = charts[c].ok && g.whole_units(charts[c].triangles);
   for(int round = 0; round < rounds; ++round) {
     // the length of the seams between two charts, by pair
     std::map<std::pair<int, int>, double> shared;
     for(std::size_t c = 0; c < charts.size(); ++c)
-      if(charts[c].ok)
+      if(charts[c].ok && joinable[c])
         for(std::size_t t : charts[c].triangles)
           for(int k = 0; k < 3; ++k) {
             const int side = int(3 * t) + k, mate = g.mate(side);
             const int d = mate < 0 || g.glued(side) ? -1 : g.chart(std::size_t(mate / 3));
-            if(d > int(c) && charts[std::size_t(d)].ok)
+            if(d > int(c) && charts[std::size_t(d)].ok && joinable[std::size_t(d)])
               shared[std::make_pair(int(c), d)] += norm3(sub3(m.xyz[std::size_t(m.vertex[t][std::size_t(k)])],
                                                              m.xyz[std::size_t(m.vertex[t][std::size_t((k + 1) % 3)])]));
           }
