@@ -1523,32 +1523,40 @@ void disk_and_torus_chart()
 // Charts that hold part of a polygon are not joined now.
 void polygon_laid_out_by_triangles()
 {
+  const std::vector<Point> first_points = {
+      Point(-0x1p-1, -0x1p+1, -0x1p-1),
+      Point(-0x1.8p+0, 0x1p-2, 0x1.56e1fc2f8f359p-997),
+      Point(0x1.8p+0, -0x1.cp+0, 0x1p-1),
+      Point(0x0p+0, -0x1.4p+0, -0x1p-1),
+      Point(0x1.56e1fc2f8f359p-997, 0x1.4p+0, 0x1.4p+0),
+      Point(-0x1.8p+0, 0x0.0000000000001p-1022, 0x1.56e1fc2f8f359p-997),
+      Point(-0x1.cp+0, 0x1.56e1fc2f8f359p-997, -0x1p+0),
+      Point(0x1p-1, -0x1p+0, 0x1.cp+0),
+      Point(-0x1.8p-1, 0x1p-2, -0x1.cp+0),
+      Point(-0x1.cp+0, -0x1.cp+0, -0x1p+1),
+      Point(-0x1p+1, 0x1p-2, 0x1.fffffff6dffffp-736),
+      Point(-0x1.8p+0, 0x1p-2, 0x1.4p+0),
+      Point(0x1.8p+0, 0x1.56e1fc2f8f359p-997, -0x1.8p-1),
+      Point(0x1.dcd65p+29, -0x1p+0, 0x1p+0)};
+  // the second soup: three points moved, its last polygons others
+  std::vector<Point> second_points = first_points;
+  second_points[6] = Point(-0x1.cp+0, 0x1.56e1fc2f8f359p-997, 0x1p-1);
+  second_points[7] = Point(-0x1p+0, -0x1.8p-1, 0x1p-2);
+  second_points[8] = Point(-0x1p+0, 0x1.cp+0, -0x1.cp+0);
+  const std::vector<Polygon> common = {{}, {11, 0, 7, 1, 3, 8}, {10, 3, 4}, {8, 3, 12}, {}, {3, 11, 6, 11}, {10, 10, 3}, {1, 6, 13}, {}, {11, 4, 9, 4, 7}, {}, {12, 9, 2}, {5, 11, 1, 10}, {4, 6, 12}, {10, 9, 3}, {7, 11, 13}, {10, 1, 3}, {4, 2, 10}, {13, 8, 12}, {7, 0, 2}, {11, 8, 9, 11, 1, 7}, {13, 9, 9}};
+  std::vector<Polygon> first_polygons = common, second_polygons = common;
+  for(const Polygon& p : std::vector<Polygon>{{1, 9, 10}, {4, 13, 9, 8, 8}, {13, 12, 1}, {0, 1, 3, 3, 12}, {0}, {8, 8}, {5, 3, 3, 0}})
+    first_polygons.push_back(p);
+  second_polygons.resize(common.size() + 7, Polygon{9});
   struct Case
   {
-    std::vector<Point> points;
-    std::vector<Polygon> polygons;
+    const std::vector<Point>& points;
+    const std::vector<Polygon>& polygons;
     double max_stretch, gutter;
     unsigned resolution, polish;
   };
-  const Case cases[] = {
-      {{Point(-0x1p-1, -0x1p+1, -0x1p-1), Point(-0x1.8p+0, 0x1p-2, 0x1.56e1fc2f8f359p-997),
-        Point(0x1.8p+0, -0x1.cp+0, 0x1p-1), Point(0x0p+0, -0x1.4p+0, -0x1p-1),
-        Point(0x1.56e1fc2f8f359p-997, 0x1.4p+0, 0x1.4p+0), Point(-0x1.8p+0, 0x0.0000000000001p-1022, 0x1.56e1fc2f8f359p-997),
-        Point(-0x1.cp+0, 0x1.56e1fc2f8f359p-997, -0x1p+0), Point(0x1p-1, -0x1p+0, 0x1.cp+0),
-        Point(-0x1.8p-1, 0x1p-2, -0x1.cp+0), Point(-0x1.cp+0, -0x1.cp+0, -0x1p+1),
-        Point(-0x1p+1, 0x1p-2, 0x1.fffffff6dffffp-736), Point(-0x1.8p+0, 0x1p-2, 0x1.4p+0),
-        Point(0x1.8p+0, 0x1.56e1fc2f8f359p-997, -0x1.8p-1), Point(0x1.dcd65p+29, -0x1p+0, 0x1p+0)},
-       {{}, {11, 0, 7, 1, 3, 8}, {10, 3, 4}, {8, 3, 12}, {}, {3, 11, 6, 11}, {10, 10, 3}, {1, 6, 13}, {}, {11, 4, 9, 4, 7}, {}, {12, 9, 2}, {5, 11, 1, 10}, {4, 6, 12}, {10, 9, 3}, {7, 11, 13}, {10, 1, 3}, {4, 2, 10}, {13, 8, 12}, {7, 0, 2}, {11, 8, 9, 11, 1, 7}, {13, 9, 9}, {1, 9, 10}, {4, 13, 9, 8, 8}, {13, 12, 1}, {0, 1, 3, 3, 12}, {0}, {8, 8}, {5, 3, 3, 0}},
-       1.3351, 0.0470588, 5u, 2u},
-      {{Point(-0x1p-1, -0x1p+1, -0x1p-1), Point(-0x1.8p+0, 0x1p-2, 0x1.56e1fc2f8f359p-997),
-        Point(0x1.8p+0, -0x1.cp+0, 0x1p-1), Point(0x0p+0, -0x1.4p+0, -0x1p-1),
-        Point(0x1.56e1fc2f8f359p-997, 0x1.4p+0, 0x1.4p+0), Point(-0x1.8p+0, 0x0.0000000000001p-1022, 0x1.56e1fc2f8f359p-997),
-        Point(-0x1.cp+0, 0x1.56e1fc2f8f359p-997, 0x1p-1), Point(-0x1p+0, -0x1.8p-1, 0x1p-2),
-        Point(-0x1p+0, 0x1.cp+0, -0x1.cp+0), Point(-0x1.cp+0, -0x1.cp+0, -0x1p+1),
-        Point(-0x1p+1, 0x1p-2, 0x1.fffffff6dffffp-736), Point(-0x1.8p+0, 0x1p-2, 0x1.4p+0),
-        Point(0x1.8p+0, 0x1.56e1fc2f8f359p-997, -0x1.8p-1), Point(0x1.dcd65p+29, -0x1p+0, 0x1p+0)},
-       {{}, {11, 0, 7, 1, 3, 8}, {10, 3, 4}, {8, 3, 12}, {}, {3, 11, 6, 11}, {10, 10, 3}, {1, 6, 13}, {}, {11, 4, 9, 4, 7}, {}, {12, 9, 2}, {5, 11, 1, 10}, {4, 6, 12}, {10, 9, 3}, {7, 11, 13}, {10, 1, 3}, {4, 2, 10}, {13, 8, 12}, {7, 0, 2}, {11, 8, 9, 11, 1, 7}, {13, 9, 9}, {9}, {9}, {9}, {9}, {9}, {9}, {9}},
-       2.5429411764705883, 1.5529411764705883, 397u, 0u}};
+  const Case cases[] = {{first_points, first_polygons, 1.3351, 0.0470588, 5u, 2u},
+                        {second_points, second_polygons, 2.5429411764705883, 1.5529411764705883, 397u, 0u}};
   namespace P = SMP::parameters;
   for(const Case& c : cases) {
     const SMP::Atlas a = SMP::make_atlas(c.points, c.polygons,
