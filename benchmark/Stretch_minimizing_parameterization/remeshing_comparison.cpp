@@ -72,11 +72,10 @@ void row(const std::string& mesh_name, const std::string& method, const Mesh& in
         rings[std::size_t(w)] = rings[std::size_t(front[i])] + 1;
         front.push_back(w);
       }
+  const auto near = [&](int v) { return rings[std::size_t(v)] >= 0 && rings[std::size_t(v)] <= 1; };
   std::vector<SMP::internal::Triangle> band, further;
-  for(const auto& t : tri) {
-    const auto near = [&](int v) { return rings[std::size_t(v)] >= 0 && rings[std::size_t(v)] <= 1; };
+  for(const auto& t : tri)
     (near(t[0]) || near(t[1]) || near(t[2]) ? band : further).push_back(t);
-  }
   SMP::Remeshing_report q_band, q_further;
   SMP::internal::measure_triangles(xyz, band, q_band);
   SMP::internal::measure_triangles(xyz, further, q_further);

@@ -137,7 +137,8 @@ public:
     }
   }
 
-  // Grows charts over the triangles whose `allowed` flag is set (one per triangle), numbered
+  // Grows charts over the triangles whose `allowed` flag is set (one per triangle; a unit's
+  // triangles all allowed or none, see whole_units(): a unit joins a chart whole), numbered
   // from `first_chart`: a triangle joins a chart while its polygon's normal stays within
   // `max_angle` (radians) of the chart's mean normal, and while the chart holds fewer than
   // `max_units` polygons (0: no limit). Every allowed triangle ends in a chart. Returns the

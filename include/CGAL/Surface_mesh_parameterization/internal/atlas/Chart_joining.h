@@ -44,7 +44,7 @@ inline void join_charts(const Atlas_triangles& m, Chart_growing& g, std::vector<
   // a union of two joinable charts is joinable: found once
   std::vector<char> joinable(charts.size());
   for(std::size_t c = 0; c < charts.size(); ++c)
-    joinable[c] = charts[c].ok && g.whole_units(charts[c].triangles);
+    joinable[c] = g.whole_units(charts[c].triangles);
   for(int round = 0; round < rounds; ++round) {
     // the length of the seams between two charts, by pair
     std::map<std::pair<int, int>, double> shared;
