@@ -335,7 +335,12 @@ inline bool better_place(long side, long top, long best_side, long best_top)
 class Occupancy
 {
 public:
-  explicit Occupancy(long width) : width_(width), taken_(0, width) {}
+  explicit Occupancy(long width) : width_(width), taken_(0, width)
+  {
+    for(leaves_ = 1; leaves_ < width; leaves_ *= 2) {}
+    longest_run_.assign(std::size_t(2 * leaves_), 0);
+    lowest_end_.assign(std::size_t(2 * leaves_), 0);
+  }
   long height() const { return long(rows_.size()); }
 
   // Whether `m` fits with its corner at (x, y); if not, `next_x` receives an x > `x` below
@@ -375,6 +380,7 @@ public:
       for(const Chart_mask::Span& s : row) { run = (std::max)(run, s.first - end); end = s.second; }
       inner_run_[std::size_t(y + r)] = run;
       row_end_[std::size_t(y + r)] = end;
+      update_rows_tree(y + r);
     }
   }
 
@@ -402,7 +408,10 @@ public:
       bool room = true; // rows whose longest free run is shorter than the chart's span there
       for(std::size_t i = 0; i < probes && room; ++i)
         room = y + m.widest[i].second >= height() || free_run(y + m.widest[i].second, end) >= m.widest[i].first;
-      if(!room) continue;
+      if(!room) { // on to the next row where the widest row has room (`end` only shrinks as y grows)
+        y = first_row_with_room(y + m.widest.front().second + 1, m.widest.front().first, end) - m.widest.front().second - 1;
+        continue;
+      }
       const long r = y + wide_row, right = end - m.width; // the last corner x worth trying
       long gap_begin = 0, x_found = -1, first_row = -1;
       const std::size_t spans = r < height() ? rows_[std::size_t(r)].size() : 0;
@@ -433,6 +442,39 @@ private:
   std::vector<std::vector<Chart_mask::Span> > rows_;
   Cell_bitmap taken_;
   std::vector<long> inner_run_, row_end_; // per row: longest free run before its last taken cell; that cell's end
+  // the same over the rows of each node of a complete binary tree on the rows (the root at 1,
+  // the row r at leaves_ + r): the longest inner run, the lowest end
+  long leaves_ = 1;
+  std::vector<long> longest_run_, lowest_end_;
+
+  void update_rows_tree(long row)
+  {
+    std::size_t i = std::size_t(leaves_ + row);
+    longest_run_[i] = inner_run_[std::size_t(row)];
+    lowest_end_[i] = row_end_[std::size_t(row)];
+    for(i /= 2; i >= 1; i /= 2) {
+      longest_run_[i] = (std::max)(longest_run_[2 * i], longest_run_[2 * i + 1]);
+      lowest_end_[i] = (std::min)(lowest_end_[2 * i], lowest_end_[2 * i + 1]);
+    }
+  }
+
+  // the first row from `from` on with a free run of `length` cells left of column `end`
+  // (free_run()), or a row at least `leaves_` if none: the first node to the right of the path
+  // up from `from` that holds such a row, then down to its leftmost one
+  long first_row_with_room(long from, long length, long end) const
+  {
+    if(from >= leaves_) return from;
+    const auto room = [&](std::size_t i) { return longest_run_[i] >= length || end - lowest_end_[i] >= length; };
+    std::size_t i = std::size_t(leaves_ + from);
+    while(!room(i)) {
+      for(; i % 2 == 1; i /= 2) // a right child: up to the first left child on the way
+        if(i == 1) return leaves_;
+      ++i;
+    }
+    while(i < std::size_t(leaves_))
+      i = room(2 * i) ? 2 * i : 2 * i + 1;
+    return long(i) - leaves_;
+  }
 
   // whether row `r` of `m` meets a taken cell with the chart's corner at (x, y); if so, `next_x`
   // as in fits()
