@@ -82,6 +82,14 @@ struct Chart_map
   Deferred_polish deferred;
 };
 
+// Whether `a` and `b` are the same chart as flatten_chart() sees it (its triangles, their
+// corners' chart vertices and positions, its slits), so that they get the same map.
+inline bool same_input(const Chart_map& a, const Chart_map& b)
+{
+  return a.triangles == b.triangles && a.corner_vertex == b.corner_vertex && a.flat.xyz == b.flat.xyz &&
+         a.flat.tri == b.flat.tri && a.slits == b.slits;
+}
+
 struct Chart_parameterization_settings
 {
   unsigned int polish_iterations = 10;   // free-border Newton steps

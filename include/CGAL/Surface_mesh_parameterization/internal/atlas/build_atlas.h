@@ -31,6 +31,7 @@
 #include <cstddef>
 #include <functional>
 #include <iterator>
+#include <map>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -352,7 +353,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   const unsigned int threads = thread_count(settings.threads);
   const std::size_t chunk = 64 * std::size_t(threads); // charts between two visits of the visitor
   std::size_t flattened = 0;
-  auto settle = [&](std::size_t begin, bool visit, const Chart_parameterization_settings& chart_settings) {
+  // (`known`: maps flattened before; a chart whose input is one of theirs takes its map as it is)
+  auto settle = [&](std::size_t begin, bool visit, const Chart_parameterization_settings& chart_settings,
+                    const std::vector<Chart_map>& known = std::vector<Chart_map>()) {
     for(std::size_t end = begin; begin < charts.size(); begin = end) {
       end = (std::min)(charts.size(), begin + chunk);
       auto t1 = std::chrono::steady_clock::now();
@@ -366,7 +369,12 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       areas.resize(charts.size());
       parallel_for_each(order.size(), threads, [&](std::size_t i) {
         Chart_map& chart = charts[order[i]];
-        flatten_chart(chart, i == 0 ? first : chart_settings);
+        const auto same =
+            std::find_if(known.begin(), known.end(), [&chart](const Chart_map& k) { return same_input(k, chart); });
+        if(same != known.end())
+          chart = *same;
+        else
+          flatten_chart(chart, i == 0 ? first : chart_settings);
         areas[order[i]] = chart.ok ? chart_areas(chart) : Chart_areas(); // a failed chart has no uv
       });
       r.seconds_parameterization += seconds_since(t1);
@@ -472,6 +480,9 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   };
   // rounds count the cuts kept; the cuts taken back are bounded too (each flattens a chart's halves)
   int round = 0, taken_back = 0;
+  // per chart, the maps of its halves when its cut was taken back: the same cut tried again
+  // (forced, or after other cuts) finds the same halves, whose maps are then taken as they are
+  std::map<std::size_t, std::vector<Chart_map> > halves_taken_back;
   auto cut_rounds = [&]() {
     while(round < rounds && taken_back < 2 * rounds && utilization < settings.packing.goal) {
       settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(rounds) + 1);
@@ -497,13 +508,14 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         uncuttable[c] = 1;
         continue;
       }
-      settle(before, false, settings.chart); // told as packing rounds
+      settle(before, false, settings.chart, halves_taken_back[c]); // told as packing rounds
       gather();
       const double after = estimated_utilization();
       // better by more than the rounding of the charts' areas: those add up to the surface's
       // area whatever the cuts, so a packing of the same scale and side fills the square as
       // before, and another scale or side changes the filling by far more than this
       if(forced || after > utilization * (1. + 1e-4)) {
+        halves_taken_back.erase(c);
         utilization = after;
         if(final_estimates) {
           accepted = trial;
@@ -516,6 +528,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         ++round;
         continue;
       }
+      halves_taken_back[c].assign(std::make_move_iterator(charts.begin() + std::ptrdiff_t(before)),
+                                  std::make_move_iterator(charts.end()));
       charts.resize(before);
       members.resize(before);
       angle.resize(before);
