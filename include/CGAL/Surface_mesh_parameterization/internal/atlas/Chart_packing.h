@@ -409,7 +409,7 @@ public:
       for(std::size_t i = 0; i < probes && room; ++i)
         room = y + m.widest[i].second >= height() || free_run(y + m.widest[i].second, end) >= m.widest[i].first;
       if(!room) { // on to the next row where the widest row has room (`end` only shrinks as y grows)
-        y = first_row_with_room(y + m.widest.front().second + 1, m.widest.front().first, end) - m.widest.front().second - 1;
+        y = first_row_with_room(y + wide_row + 1, m.widest.front().first, end) - wide_row - 1;
         continue;
       }
       const long r = y + wide_row, right = end - m.width; // the last corner x worth trying
