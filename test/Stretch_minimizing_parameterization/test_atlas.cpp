@@ -1617,6 +1617,11 @@ void packing_search()
       area[c] = std::floor(extent[0] * extent[1]); // ties in the order too
       for(int k = 0; k < 4; ++k)
         masks[c][std::size_t(k)] = I::chart_mask(I::turned_chart(uv, extent, k), tri, 1., pad);
+      // charts whose higher turns repeat a lower turn's mask (as a chart symmetric under the half
+      // turn, or under the quarter turn): those turns are not searched, for the same layout
+      if(trial % 4 == 3 && c % 3 != 2)
+        for(std::size_t k = c % 3 == 0 ? 2 : 1; k < 4; ++k)
+          masks[c][k] = masks[c][c % 3 == 0 ? k - 2 : 0];
     }
     std::vector<long> at_x, at_y;
     std::vector<int> turn;

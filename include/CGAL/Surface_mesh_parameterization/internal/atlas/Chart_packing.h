@@ -508,10 +508,12 @@ private:
 // Places the charts, the largest `size` first, each in the quarter turn and at the place that
 // keeps the square holding them all smallest: inside the square so far where the chart's top
 // rests lowest, else where the square grows least (ties: the lower turn). Returns the side of
-// the square, -1 if it would exceed `limit` cells. With `threads` >= 2, a second thread searches
-// the half turns while this one searches the others: the place of each pair of turns is the
-// best of the pair whatever the other pair found (that only bounds the search), so the layout is
-// the same.
+// the square, -1 if it would exceed `limit` cells. A turn whose mask is that of a lower turn
+// (a chart symmetric under the half turn, as small compact ones often are) is not searched: it
+// would find the same place, and the lower turn wins ties. With `threads` >= 2, a second thread
+// searches the higher half of the turns left while this one searches the others: the place of
+// each half is the best of its turns whatever the other half found (that only bounds the
+// search), so the layout is the same.
 inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, const std::vector<double>& size,
                          long limit, std::vector<long>& at_x, std::vector<long>& at_y, std::vector<int>& turn,
                          unsigned int threads = 1)
@@ -526,16 +528,31 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
   at_x.assign(n, 0); at_y.assign(n, 0); turn.assign(n, 0);
   long side = 0;
   struct Place { long side = -1, top = -1, x = 0, y = 0; int turn = 0; };
-  // the best place of chart i in turns `first` and `first` + 1 if better than `p`, else `p`
-  const auto best_of = [&](std::size_t i, int first, Place p) {
-    for(int k = first; k < first + 2; ++k)
+  // per chart, its turns to search, in order (`turns[i].first`), and how many (`.second`)
+  std::vector<std::pair<std::array<int, 4>, int> > turns(n);
+  for(std::size_t i = 0; i < n; ++i)
+    for(int k = 0; k < 4; ++k) {
+      const Chart_mask& m = masks[i][std::size_t(k)];
+      bool repeated = false;
+      for(int j = 0; j < k && !repeated; ++j)
+        repeated = masks[i][std::size_t(j)].width == m.width && masks[i][std::size_t(j)].rows == m.rows;
+      if(!repeated)
+        turns[i].first[std::size_t(turns[i].second++)] = k;
+    }
+  // the best place of chart i in the lower half of its turns (or the higher one if `higher`) if
+  // better than `p`, else `p`
+  const auto best_of = [&](std::size_t i, bool higher, Place p) {
+    const int count = turns[i].second, middle = (count + 1) / 2;
+    for(int j = higher ? middle : 0; j < (higher ? count : middle); ++j) {
+      const int k = turns[i].first[std::size_t(j)];
       if(occupancy.best_place(masks[i][std::size_t(k)], side, p.side, p.top, p.x, p.y))
         p.turn = k;
+    }
     return p;
   };
-  // the half turns' search on a second thread, a chart at a time: `task` is the chart to place
-  // (`none`: no chart), set by this thread and taken back by the other once `half` holds its
-  // place; the thread is stopped and joined however this function ends
+  // the search of the higher turns on a second thread, a chart at a time: `task` is the chart
+  // to place (`none`: no chart), set by this thread and taken back by the other once `half`
+  // holds its place; the thread is stopped and joined however this function ends
   constexpr std::size_t none = std::size_t(-1);
   std::atomic<std::size_t> task(none);
   std::atomic<bool> done(false), stop(false);
@@ -560,7 +577,7 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
             if(stop.load(std::memory_order_acquire)) return;
             std::this_thread::yield();
           }
-          half = best_of(i, 2, Place());
+          half = best_of(i, true, Place());
           task.store(none, std::memory_order_relaxed);
           done.store(true, std::memory_order_release);
         }
@@ -574,13 +591,13 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
     if(helper.thread.joinable()) {
       done.store(false, std::memory_order_relaxed);
       task.store(i, std::memory_order_release);
-      p = best_of(i, 0, Place());
+      p = best_of(i, false, Place());
       while(!done.load(std::memory_order_acquire))
         std::this_thread::yield();
       if(half.side >= 0 && better_place(half.side, half.top, p.side, p.top))
         p = half;
-    } else { // the half turns bounded by the place of the others
-      p = best_of(i, 2, best_of(i, 0, Place()));
+    } else { // the higher turns bounded by the place of the others
+      p = best_of(i, true, best_of(i, false, Place()));
     }
     if(p.side < 0)
       return -1;
