@@ -55,6 +55,7 @@ struct Packing_result
   double utilization = 0.;        // area of the charts / area of the square
   double side = 0.;               // side of the square in the charts' surface units
   double scale = 0.;              // texels per surface unit
+  double fill = 0.;               // the square's share that the charts' gutter-widened cells take (0: unknown)
 };
 
 // Turns `uv` in place so that its smallest bounding rectangle is axis-aligned, wider than high,
@@ -645,6 +646,7 @@ struct Packing_layout
 {
   double scale = 0.;
   long side = 0;
+  double taken = 0.; // cells of the charts (each widened by the gutter)
   std::vector<long> x, y;
   std::vector<int> turn;
   std::vector<Vec2> shift;
@@ -726,24 +728,40 @@ inline Vec2 half_turn_shift(const Chart_mask& m, const Vec2& extent, double scal
 // chart of its area: it is hardest to fit late, and smaller charts fill the room it leaves).
 enum class Packing_order { AREA, AREA_AND_BOX };
 
+// The cells of the charts' masks (each chart's first turn).
+inline double cells_taken(const std::vector<std::array<Chart_mask, 4> >& masks)
+{
+  double taken = 0.;
+  for(const std::array<Chart_mask, 4>& m : masks)
+    for(const std::vector<Chart_mask::Span>& row : m[0].rows)
+      for(const Chart_mask::Span& span : row) taken += double(span.second - span.first);
+  return taken;
+}
+
 // The layout at the largest scale found (in at most `tries` packings, from `scale` on) whose
 // square fits `cells` cells, each chart widened by `pad` cells; false if none fits.
 inline bool search_layout(const Packing_input& in, long cells, long pad, double scale, int tries, Packing_layout& best,
-                          unsigned int threads = 1, Packing_order by = Packing_order::AREA)
+                          unsigned int threads = 1, Packing_order by = Packing_order::AREA, double fill = 0.)
 {
   const std::size_t n = in.area.size();
   Packing_layout trial;
   std::vector<double> size = in.area;
   // the side of the square at scale `at`, laid out on twice the texture's side so that a scale
   // too large still tells by how much (the layouts that fit are the same), -1 beyond that
-  const auto pack = [&](double at) {
-    std::vector<std::array<Chart_mask, 4> > masks(n);
+  std::vector<std::array<Chart_mask, 4> > masks(n); // of the charts at the scale `masks_at`
+  double masks_at = 0.;
+  const auto make_masks = [&](double at) {
+    if(at == masks_at) return;
     parallel_for_each(n, thread_count(threads), [&](std::size_t c) {
       for(std::size_t k = 0; k < 2; ++k) {
         masks[c][k] = chart_mask(in.turned_uv[c][k], (*in.tri)[c], in.outline[c], at, pad);
         masks[c][k + 2] = half_turned(masks[c][k]);
       }
     });
+    masks_at = at;
+  };
+  const auto pack = [&](double at) {
+    make_masks(at);
     if(by == Packing_order::AREA_AND_BOX)
       for(std::size_t c = 0; c < n; ++c)
         size[c] = std::sqrt(in.area[c] * double(masks[c][0].width) * double(masks[c][0].height()));
@@ -758,6 +776,7 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
         trial.shift[c] = half_turn_shift(masks[c][std::size_t(trial.turn[c] - 2)],
                                          trial.turn[c] == 3 ? Vec2{e[1], e[0]} : e, at, pad);
       }
+    trial.taken = cells_taken(masks);
     best = trial;
     return trial.side;
   };
@@ -767,6 +786,17 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   const double alone = double(cells - 2 * pad - 2) / in.longest;
   double too_large = HUGE_VAL;
   if(alone > 0. && scale > alone) scale = alone;
+  // With the share `fill` of its square that the charts' cells took in a coarser layout, the
+  // side at a scale is about that of a square of their cells at that scale over that share: a
+  // start whose side this puts far from the window is moved to its middle (the gutter, whole
+  // cells, makes the side grow faster than the scale, the more so the more charts)
+  for(int step = 0; step < 3 && fill > 0.; ++step) {
+    make_masks(scale);
+    const double side = std::sqrt(cells_taken(masks) / fill);
+    if(!(side > 0.) || std::abs(side / (0.99 * double(cells)) - 1.) < 0.025) break;
+    scale *= 0.99 * double(cells) / side;
+    if(alone > 0.) scale = (std::min)(scale, alone);
+  }
   int misses = 0;
   for(int round = 0; round < tries; ++round) {
     const long side = pack(scale);
@@ -795,9 +825,9 @@ inline double layout_utilization(const Packing_input& in, const Packing_layout& 
 // and box too: the layout that fills it better. (Final packings only: the coarse estimates
 // are many, and a second order would cost them as much again.)
 inline bool search_layouts(const Packing_input& in, long cells, long pad, double scale, int tries, double goal,
-                           Packing_layout& best, unsigned int threads)
+                           Packing_layout& best, unsigned int threads, double fill = 0.)
 {
-  if(!search_layout(in, cells, pad, scale, tries, best, threads))
+  if(!search_layout(in, cells, pad, scale, tries, best, threads, Packing_order::AREA, fill))
     return false;
   if(layout_utilization(in, best) >= goal)
     return true;
@@ -825,6 +855,7 @@ inline Packing_result estimate_packing(const Packing_input& in, const Packing_se
   r.scale = layout.scale / ratio * double(coarse) / double(layout.side);
   r.utilization = layout_utilization(in, layout);
   r.side = double(layout.side) / layout.scale;
+  r.fill = layout.taken / (double(layout.side) * double(layout.side));
   return r;
 }
 
@@ -846,7 +877,8 @@ inline Packing_result pack_prepared(const Packing_input& in, const Packing_resul
   // hopeful (its gutter rounds to fewer cells, often none), is aimed at the middle of that window
   const double start = coarse.scale > 0. ? 0.99 * coarse.scale : double(cells) * std::sqrt(0.6 / in.total_3d);
   Packing_layout best;
-  if(!search_layouts(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, settings.goal, best, settings.threads)) {
+  if(!search_layouts(in, cells, pad, start, coarse.scale > 0. ? 6 : 10, settings.goal, best, settings.threads,
+                     coarse.fill)) {
     // could not fit at any tried scale: one chart per row of a larger square, at a scale where
     // the longest chart spans the texture at most (the start's estimate from the surface area
     // is unbounded for needles, whose extent is not in proportion to their area)
