@@ -746,8 +746,6 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
   const std::size_t n = in.area.size();
   Packing_layout trial;
   std::vector<double> size = in.area;
-  // the side of the square at scale `at`, laid out on twice the texture's side so that a scale
-  // too large still tells by how much (the layouts that fit are the same), -1 beyond that
   std::vector<std::array<Chart_mask, 4> > masks(n); // of the charts at the scale `masks_at`
   double masks_at = 0.;
   const auto make_masks = [&](double at) {
@@ -760,6 +758,8 @@ inline bool search_layout(const Packing_input& in, long cells, long pad, double 
     });
     masks_at = at;
   };
+  // the side of the square at scale `at`, laid out on twice the texture's side so that a scale
+  // too large still tells by how much (the layouts that fit are the same), -1 beyond that
   const auto pack = [&](double at) {
     make_masks(at);
     if(by == Packing_order::AREA_AND_BOX)
