@@ -183,6 +183,33 @@ Soup polygons()
   return s;
 }
 
+// Quads a reader splits into a sliver: a grid of flat triangles over a saddle, each with the
+// midpoint of its long side (lifted a little off it) as a fourth corner. Half the quads have
+// that midpoint as corner 1, between corners 0 and 2: their shorter diagonal goes from it to the
+// opposite corner, while a reader's fan from corner 0 draws the sliver (0, 1, 2).
+Soup sliver_quads()
+{
+  Soup s{"quads with a corner beside a side", {}, {}};
+  const int nx = 16, ny = 24;
+  const double hy = 0.5, lift = 0.02;
+  auto z = [](double x, double y) { return 0.02 * ((x - 8.) * (x - 8.) - (y - 6.) * (y - 6.)); };
+  auto grid = [&](int i, int j) { return std::size_t(j * (nx + 1) + i); };
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i <= nx; ++i) s.points.emplace_back(i, j * hy, z(i, j * hy));
+  std::vector<std::size_t> middle((nx + 1) * (ny + 1)); // of the side from (i, j) to (i + 1, j)
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i < nx; ++i) {
+      middle[grid(i, j)] = s.points.size();
+      s.points.emplace_back(i + 0.5, j * hy, z(i + 0.5, j * hy) + lift);
+    }
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i) {
+      s.polygons.push_back({grid(i, j), middle[grid(i, j)], grid(i + 1, j), grid(i + 1, j + 1)});
+      s.polygons.push_back({grid(i, j), grid(i + 1, j + 1), middle[grid(i, j + 1)], grid(i, j + 1)});
+    }
+  return s;
+}
+
 // Found by the fuzz harness: a polygon that goes back and forth (a, b, a, c, a, c) has no area
 // (its triangulation gave the triangle (a, b, c) twice, one flipped on top of the other); beside
 // it, a polygon that comes back to a corner: a triangle and an edge there and back.
@@ -259,7 +286,7 @@ SMP::Atlas_report run(const Soup& s, double max_l2)
   // may split a polygon along other diagonals; a polygon without one is checked from corner
   // 0); their 3D area decides whether the uv must be positive
   std::vector<std::array<std::size_t, 4> > tri;
-  std::vector<char> positive;
+  std::vector<char> positive, shape_kept;
   for(std::size_t p = 0; p < s.polygons.size(); ++p) {
     const Polygon& q = s.polygons[p];
     const std::size_t n = q.size();
@@ -280,16 +307,73 @@ SMP::Atlas_report run(const Soup& s, double max_l2)
       for(const auto& e : ears) {
         tri.push_back({p, e[0], e[1], e[2]});
         positive.push_back(1);
+        shape_kept.push_back(0);
       }
       if(!ears.empty()) continue;
       start = 0; // not a simple positive outline: its fan from corner 0 is reported
+    }
+    // whether a reader's split is the one of the polygon's shape in 3D: that fan's corner is
+    // the first one whose fan turns like the polygon in 3D (Newell's normal)
+    CGAL::Simple_cartesian<double>::Vector_3 normal(0., 0., 0.);
+    for(std::size_t k = 0; k < n; ++k) {
+      const Point &a = s.points[q[k]], &b = s.points[q[(k + 1) % n]];
+      normal = normal + CGAL::Simple_cartesian<double>::Vector_3((a.y() - b.y()) * (a.z() + b.z()),
+                                                                 (a.z() - b.z()) * (a.x() + b.x()),
+                                                                 (a.x() - b.x()) * (a.y() + b.y()));
+    }
+    std::size_t start_3d = n;
+    for(std::size_t k = 0; k < n && start_3d == n; ++k) {
+      bool all = true;
+      for(std::size_t i = 1; i + 1 < n && all; ++i)
+        all = CGAL::cross_product(s.points[q[(k + i) % n]] - s.points[q[k]], s.points[q[(k + i + 1) % n]] - s.points[q[k]]) *
+                  normal > 0.;
+      if(all) start_3d = k;
     }
     for(std::size_t i = 1; i + 1 < n; ++i) {
       const std::size_t a = start, b = (start + i) % n, c = (start + i + 1) % n;
       tri.push_back({p, a, b, c});
       positive.push_back(CGAL::squared_area(s.points[q[a]], s.points[q[b]], s.points[q[c]]) > 0.);
+      shape_kept.push_back(n == 3 || start == start_3d);
     }
   }
+  // the normalized L2 stretch of those triangles (Sander's, as the package measures it): what a
+  // reader who splits the polygons that way sees, held to the same bound where the reader's
+  // split is that of the polygon's shape (a polygon that is not convex and whose map is, or the
+  // other way round, is split by readers in ways the atlas cannot all foresee)
+  // (in coordinates scaled by a power of two to at most 1, which squares of soups of any scale
+  // keep finite)
+  double largest = 0.;
+  for(const Point& p : s.points)
+    largest = (std::max)({largest, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  const auto scaled = [exponent](const Point& p) {
+    return Point(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent), std::ldexp(p.z(), -exponent));
+  };
+  double area_3d = 0., area_uv = 0., sum = 0.;
+  for(std::size_t i = 0; i < tri.size(); ++i) {
+    if(!shape_kept[i]) continue;
+    const auto& t = tri[i];
+    const Polygon& q = s.polygons[t[0]];
+    const auto& uv = atlas.uv[t[0]];
+    const Point p1 = scaled(s.points[q[t[1]]]), p2 = scaled(s.points[q[t[2]]]), p3 = scaled(s.points[q[t[3]]]);
+    const double s1 = uv[t[1]][0], s2 = uv[t[2]][0], s3 = uv[t[3]][0];
+    const double t1 = uv[t[1]][1], t2 = uv[t[2]][1], t3 = uv[t[3]][1];
+    const double a3 = std::sqrt(CGAL::squared_area(p1, p2, p3)), a2 = 0.5 * ((s2 - s1) * (t3 - t1) - (s3 - s1) * (t2 - t1));
+    if(!(a3 > 0.) || !(a2 > 0.)) continue; // flat in 3D; flat or flipped in uv is counted below
+    double ss = 0., tt = 0.;
+    for(int i = 0; i < 3; ++i) {
+      const double ds = (p1[i] * (t2 - t3) + p2[i] * (t3 - t1) + p3[i] * (t1 - t2)) / (2. * a2);
+      const double dt = (p1[i] * (s3 - s2) + p2[i] * (s1 - s3) + p3[i] * (s2 - s1)) / (2. * a2);
+      ss += ds * ds;
+      tt += dt * dt;
+    }
+    area_3d += a3;
+    area_uv += a2;
+    sum += a3 * 0.5 * (ss + tt);
+  }
+  const double reader_l2 = area_3d > 0. ? std::sqrt(sum / area_3d) * std::sqrt(area_uv / area_3d) : 1.;
+  SMP_CHECK(reader_l2 <= max_l2, s.name << ": L2 of the fans " << reader_l2);
   const smp_test::Atlas_check c = smp_test::check_atlas(atlas, tri, positive);
   SMP_CHECK(c.outside == 0, s.name << ": " << c.outside << " corners outside the unit square");
   SMP_CHECK(c.not_positive == 0, s.name << ": " << c.not_positive << " triangles flipped or flat in uv");
@@ -1741,6 +1825,7 @@ int run_test(int argc, char** argv)
   run(join(sphere(12, 24), torus(30, 12, false), "sphere and torus", 4.), 1.05);
   run(non_manifold(), 1.05);
   run(polygons(), 1.05);
+  run(sliver_quads(), 1.05);
   run(needle(), 1.05);
   run(letters(), 1.05);
   run(folded(), 1.05);

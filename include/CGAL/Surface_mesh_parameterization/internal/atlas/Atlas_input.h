@@ -54,19 +54,44 @@ struct Edge_hash
   }
 };
 
+// Whether the fan of polygon `p` from its corner `a` has only triangles that turn like the
+// polygon: each triangle's normal within 90 degrees of `normal` (the polygon's Newell normal),
+// none flat.
+inline bool fan_turns_like_polygon(const std::vector<Vec3>& p, const Vec3& normal, std::size_t a)
+{
+  const std::size_t n = p.size();
+  for(std::size_t k = 1; k + 1 < n; ++k)
+    if(!(dot3(cross3(sub3(p[(a + k) % n], p[a]), sub3(p[(a + k + 1) % n], p[a])), normal) > 0.))
+      return false;
+  return true;
+}
+
 // Splits one polygon (its corners already welded, consecutive repeats removed) into triangles
-// of corner indices: a quad along its shorter diagonal, larger polygons by triangulate_loop().
+// of corner indices. Readers of polygon files split a polygon into a fan, mostly from its first
+// corner, or from the first corner that sees all of it, and the stretch they see is that of the
+// fan's triangles: the polygon is split into the fan from its first corner whose triangles all
+// turn like the polygon (a convex polygon: its first corner), so that the atlas measures and
+// bounds what they draw. A polygon without such a corner: a quad along its shorter diagonal, a
+// larger polygon by triangulate_loop().
 inline void triangulate_polygon(const std::vector<Vec3>& p, std::vector<std::array<int, 3> >& out)
 {
   out.clear();
-  const int n = int(p.size());
-  if(n == 3) {
-    out.push_back({0, 1, 2});
-    return;
+  const std::size_t n = p.size();
+  Vec3 normal = {0., 0., 0.};
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vec3 &a = p[i], &b = p[(i + 1) % n];
+    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
   }
+  for(std::size_t a = 0; a < n; ++a)
+    if(n == 3 || fan_turns_like_polygon(p, normal, a)) {
+      for(std::size_t k = 1; k + 1 < n; ++k)
+        out.push_back({int(a), int((a + k) % n), int((a + k + 1) % n)});
+      return;
+    }
   if(n == 4) {
-    const double d02 = norm3(sub3(p[2], p[0])), d13 = norm3(sub3(p[3], p[1]));
-    if(d02 <= d13) {
+    if(norm3(sub3(p[2], p[0])) <= norm3(sub3(p[3], p[1]))) {
       out.push_back({0, 1, 2});
       out.push_back({0, 2, 3});
     } else {
