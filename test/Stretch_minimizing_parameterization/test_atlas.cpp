@@ -1654,6 +1654,27 @@ void polygon_laid_out_by_triangles()
 
 // Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
 // two corners) has no triangle to chart; its polygons are still in a chart that exists.
+// A two-sided surface (every polygon also there turned over, as game assets and some CAD
+// exports have it) or one whose polygons are all listed twice: each copy of the surface is
+// charted as the surface alone would be, instead of every edge with four sides cutting every
+// triangle apart; no copy overlaps the other in uv (run() checks it).
+void repeated_polygons()
+{
+  const Soup one = torus(24, 12, true);
+  const SMP::Atlas_report alone = run(one, 1.05);
+  for(const bool turned : {true, false}) {
+    Soup s = one;
+    s.name = turned ? "torus, two-sided" : "torus, every polygon twice";
+    for(Polygon q : one.polygons) {
+      if(turned) std::reverse(q.begin(), q.end());
+      s.polygons.push_back(q);
+    }
+    const SMP::Atlas_report r = run(s, 1.05);
+    SMP_CHECK(r.charts <= 2 * alone.charts, s.name << ": " << r.charts << " charts, " << alone.charts << " for one side");
+    SMP_CHECK(r.seam_length <= 2.0001 * alone.seam_length, s.name << ": seams " << r.seam_length << ", one side " << alone.seam_length);
+  }
+}
+
 void only_flat_polygons()
 {
   std::vector<Point> points(5, Point(-0.75, -0.75, -0.75));
@@ -1812,6 +1833,7 @@ int run_test(int argc, char** argv)
   join_taken_back();
   charts_joined();
   only_flat_polygons();
+  repeated_polygons();
   polygon_laid_out_by_triangles();
   disk_and_torus_chart();
   scaled_soups();

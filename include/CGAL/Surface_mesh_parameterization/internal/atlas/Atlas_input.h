@@ -30,12 +30,13 @@ namespace Surface_mesh_parameterization {
 namespace internal {
 
 // Triangles of a soup. `vertex[t][k]` is an input vertex index (the first input vertex at that
-// position: duplicates are welded); `polygon[t]` the input polygon the triangle comes from and
+// position: duplicates are welded), or, in a polygon that repeats earlier ones, a copy of one
+// appended to `xyz` (see separate_repeated_polygons()); `polygon[t]` the input polygon the triangle comes from and
 // `corner[t][k]` the corner of that polygon. Polygons whose corners span no triangle (fewer than
 // three distinct positions) have no triangle and are listed in `flat_polygons`.
 struct Atlas_triangles
 {
-  std::vector<Vec3> xyz;                         // the input's positions, as doubles
+  std::vector<Vec3> xyz;                         // the input's positions, as doubles, then the copies
   std::vector<std::array<int, 3> > vertex;
   std::vector<std::size_t> polygon;
   std::vector<std::array<int, 3> > corner;
@@ -144,6 +145,58 @@ inline void split_into_simple_loops(const std::vector<int>& ring, const std::vec
   loops.emplace_back(walk, walk_corner);
 }
 
+// Gives copies of their vertices to the triangles of a polygon that repeats an earlier polygon
+// (the same vertices, in any order: a two-sided surface, whose polygons are all there turned
+// over too, or polygons listed twice): the k-th repetition takes the k-th copies (appended to
+// `m.xyz`), so that each copy of the surface is charted on its own, as the surface alone would
+// be, rather than cut along every edge, which has four sides there. `rings` holds the sorted
+// vertices of every polygon with triangles, from `ring_begin[p]` to `ring_begin[p + 1]` (empty
+// for the others).
+inline void separate_repeated_polygons(Atlas_triangles& m, const std::vector<int>& rings,
+                                       const std::vector<std::size_t>& ring_begin)
+{
+  const std::size_t np = ring_begin.size() - 1, nv = m.xyz.size();
+  const auto ring = [&](std::size_t p) {
+    return std::make_pair(rings.begin() + std::ptrdiff_t(ring_begin[p]), rings.begin() + std::ptrdiff_t(ring_begin[p + 1]));
+  };
+  std::vector<std::pair<std::size_t, std::size_t> > by_hash; // (hash of the ring, polygon)
+  by_hash.reserve(np);
+  for(std::size_t p = 0; p < np; ++p) {
+    std::size_t h = ring_begin[p + 1] - ring_begin[p];
+    for(auto it = ring(p).first; it != ring(p).second; ++it)
+      h = h * 0x9E3779B97F4A7C15ull + std::size_t(*it) + 1;
+    if(ring_begin[p + 1] > ring_begin[p])
+      by_hash.emplace_back(h, p);
+  }
+  std::sort(by_hash.begin(), by_hash.end());
+  std::vector<std::size_t> repeat(np, 0); // earlier polygons with the same vertices
+  bool any = false;
+  for(std::size_t a = 0, b = 0; a < by_hash.size(); a = b) {
+    for(b = a + 1; b < by_hash.size() && by_hash[b].first == by_hash[a].first; ++b) {}
+    for(std::size_t i = a + 1; i < b; ++i) // the polygons of one hash, in their order
+      for(std::size_t j = a; j < i; ++j) {
+        const auto x = ring(by_hash[i].second), y = ring(by_hash[j].second);
+        if(x.second - x.first == y.second - y.first && std::equal(x.first, x.second, y.first))
+          repeat[by_hash[i].second] = (std::max)(repeat[by_hash[i].second], repeat[by_hash[j].second] + 1);
+      }
+    any = any || b > a + 1;
+  }
+  if(!any)
+    return;
+  std::unordered_map<std::size_t, int> copy; // repetition * nv + vertex -> its copy
+  for(std::size_t t = 0; t < m.vertex.size(); ++t) {
+    const std::size_t k = repeat[m.polygon[t]];
+    if(k == 0)
+      continue;
+    for(int& v : m.vertex[t]) {
+      const auto it = copy.emplace(k * nv + std::size_t(v), int(m.xyz.size())).first;
+      if(it->second == int(m.xyz.size()))
+        m.xyz.push_back(m.xyz[std::size_t(v)]);
+      v = it->second;
+    }
+  }
+}
+
 // Reads the soup into `out`, its coordinates scaled by a power of two (`length_unit`). Returns
 // an empty string, or why the soup cannot be used: a coordinate that is not finite, a corner
 // index out of range.
@@ -208,6 +261,8 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
   std::vector<std::array<int, 3> > pieces;
   std::set<std::array<int, 3> > seen; // the triangles of the polygon, as sorted vertices
   std::vector<std::pair<std::vector<int>, std::vector<int> > > loops;
+  std::vector<int> sorted_rings;                         // of the polygons with triangles
+  std::vector<std::size_t> ring_begin(1, 0);
   index = 0;
   for(const auto& polygon : polygons) {
     ring.clear();
@@ -227,6 +282,7 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
     }
     if(ring.size() < 3) {
       out.flat_polygons.push_back(index++);
+      ring_begin.push_back(sorted_rings.size());
       continue;
     }
     // each simple loop triangulated; a triangle covered twice (in any orientation) kept once
@@ -256,8 +312,13 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
     }
     if(!any)
       out.flat_polygons.push_back(index);
+    else
+      sorted_rings.insert(sorted_rings.end(), ring.begin(), ring.end());
+    std::sort(sorted_rings.begin() + std::ptrdiff_t(ring_begin.back()), sorted_rings.end());
+    ring_begin.push_back(sorted_rings.size());
     ++index;
   }
+  separate_repeated_polygons(out, sorted_rings, ring_begin);
   return std::string();
 }
 
