@@ -25,6 +25,7 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <new>
 #include <sstream>
 #include <string>
@@ -292,8 +293,53 @@ inline bool check_before_reading(const std::string& file, std::string& error)
   return false;
 }
 
+// The text of an OBJ file whose lines go on after a backslash at their end (as some modellers
+// write long faces), with those lines joined, in `joined`; false if it has none (or cannot be
+// read), which CGAL's reader then takes as it is.
+inline bool join_continued_obj_lines(const std::string& file, std::string& joined)
+{
+  if(lower_extension(file) != ".obj")
+    return false;
+  std::ifstream in(file, std::ios::binary);
+  // a first pass looks for a continued line, holding a block at a time
+  bool found = false;
+  char last = '\0', before = '\0';
+  std::vector<char> block(1 << 16);
+  while(!found && in) {
+    in.read(block.data(), std::streamsize(block.size()));
+    for(std::streamsize i = 0; i < in.gcount() && !found; ++i) {
+      const char c = block[std::size_t(i)];
+      found = c == '\n' && (last == '\\' || (last == '\r' && before == '\\'));
+      before = last;
+      last = c;
+    }
+  }
+  if(!found)
+    return false;
+  in.clear();
+  in.seekg(0);
+  joined.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  bool any = false;
+  std::size_t kept = 0;
+  for(std::size_t i = 0; i < joined.size(); ++i) {
+    if(joined[i] == '\\') {
+      const std::size_t end = i + 1 < joined.size() && joined[i + 1] == '\r' ? i + 2 : i + 1;
+      if(end < joined.size() && joined[end] == '\n') {
+        joined[kept++] = ' ';
+        i = end;
+        any = true;
+        continue;
+      }
+    }
+    joined[kept++] = joined[i];
+  }
+  joined.resize(kept);
+  return any;
+}
+
 // The polygons of `file`: a plain OFF file read by read_plain_off(), any other by CGAL's reader
-// once check_before_reading() lets it; an exception becomes false and a message.
+// once check_before_reading() lets it (an OBJ file with continued lines, joined first); an
+// exception becomes false and a message.
 template <typename Point>
 bool read_polygons(const std::string& file, std::vector<Point>& points,
                    std::vector<std::vector<std::size_t> >& polygons, std::string& error)
@@ -305,6 +351,11 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
     polygons.clear();
     if(!check_before_reading(file, error))
       return false;
+    std::string joined;
+    if(join_continued_obj_lines(file, joined)) {
+      std::istringstream in(joined);
+      return CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+    }
     return CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
   } catch(const std::bad_alloc&) {
     error = "out of memory while reading " + file;

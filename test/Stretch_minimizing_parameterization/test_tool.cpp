@@ -298,6 +298,22 @@ void check_errors()
   check_error("OBJ face index out of range", "bad_index.obj", "cannot read");
 }
 
+// An OBJ file whose long lines go on after a backslash (as Rhino writes them), with indices
+// counted from the end and texture and normal indices: read as the polygons they spell.
+void check_obj_continued_lines()
+{
+  std::ofstream("continued.obj") << "# continued lines\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n"
+                                    "f 1 2 \\\n 5\nf -4 -3 \\\r\n -1\nf 3/1/1 4/2/2 5/3/3\nf -2 -5 -1\n";
+  const Result r = run("continued.obj --atlas -q --no-pictures -o out_continued");
+  SMP_CHECK(r.status == 0, "continued lines: " << r.err);
+  std::ifstream obj("out_continued/continued.obj");
+  std::vector<std::string> faces;
+  for(std::string line; std::getline(obj, line);)
+    if(line.rfind("f ", 0) == 0) faces.push_back(line);
+  const std::vector<std::string> expected = {"f 1/1 2/2 5/3", "f 2/4 3/5 5/6", "f 3/7 4/8 5/9", "f 4/10 1/11 5/12"};
+  SMP_CHECK(faces == expected, "continued lines: " << faces.size() << " faces written");
+}
+
 // A vertex of no face is left out (CGAL's parameterization wants a valid polygon mesh), and
 // said so; no temporary file is left in the output folder.
 void check_isolated_vertex()
@@ -528,6 +544,7 @@ int main()
   check_plain_off();
   check_outputs();
   check_errors();
+  check_obj_continued_lines();
   check_isolated_vertex();
   check_atlas();
   check_remesh();
