@@ -171,15 +171,15 @@ inline void separate_repeated_polygons(Atlas_triangles& m, const std::vector<int
   std::sort(by_hash.begin(), by_hash.end());
   std::vector<std::size_t> repeat(np, 0); // earlier polygons with the same vertices
   bool any = false;
+  std::map<std::vector<int>, std::size_t> seen; // the rings of one hash, and how often met
   for(std::size_t a = 0, b = 0; a < by_hash.size(); a = b) {
     for(b = a + 1; b < by_hash.size() && by_hash[b].first == by_hash[a].first; ++b) {}
-    for(std::size_t i = a + 1; i < b; ++i) // the polygons of one hash, in their order
-      for(std::size_t j = a; j < i; ++j) {
-        const auto x = ring(by_hash[i].second), y = ring(by_hash[j].second);
-        if(x.second - x.first == y.second - y.first && std::equal(x.first, x.second, y.first))
-          repeat[by_hash[i].second] = (std::max)(repeat[by_hash[i].second], repeat[by_hash[j].second] + 1);
-      }
-    any = any || b > a + 1;
+    if(b == a + 1)
+      continue;
+    any = true;
+    seen.clear();
+    for(std::size_t i = a; i < b; ++i) // the polygons of one hash, in their order
+      repeat[by_hash[i].second] = seen[std::vector<int>(ring(by_hash[i].second).first, ring(by_hash[i].second).second)]++;
   }
   if(!any)
     return;
