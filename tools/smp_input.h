@@ -376,7 +376,7 @@ bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<
   if(ok && !polygons.empty())
     return true;
   if(error.empty())
-    error = "cannot read polygons from " + file;
+    error = ok ? file + " holds no polygon (" + std::to_string(points.size()) + " points)" : "cannot read polygons from " + file;
   return false;
 }
 

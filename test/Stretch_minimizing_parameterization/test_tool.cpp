@@ -296,6 +296,11 @@ void check_errors()
   // found by the fuzz harness: CGAL 5.5.1's read_polygon_mesh() reads past its points for such an index
   std::ofstream("bad_index.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 4 9\n";
   check_error("OBJ face index out of range", "bad_index.obj", "cannot read");
+  // a point set (trimesh's points_emptyface.ply is one): read, but nothing to parameterize
+  std::ofstream("points_only.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                      "property float z\nelement face 0\nproperty list uchar int vertex_indices\n"
+                                      "end_header\n0 0 0\n1 0 0\n0 1 0\n";
+  check_error("a point set", "points_only.ply --atlas", "no polygon");
 }
 
 // An OBJ file whose long lines go on after a backslash (as Rhino writes them), with indices
