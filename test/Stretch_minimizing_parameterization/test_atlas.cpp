@@ -1652,8 +1652,6 @@ void polygon_laid_out_by_triangles()
   }
 }
 
-// Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
-// two corners) has no triangle to chart; its polygons are still in a chart that exists.
 // A two-sided surface (every polygon also there turned over, as game assets and some CAD
 // exports have it) or one whose polygons are all listed twice: each copy of the surface is
 // charted as the surface alone would be, instead of every edge with four sides cutting every
@@ -1675,6 +1673,8 @@ void repeated_polygons()
   }
 }
 
+// Found by the fuzz harness: a soup whose polygons all lack area (repeated points, polygons of
+// two corners) has no triangle to chart; its polygons are still in a chart that exists.
 void only_flat_polygons()
 {
   std::vector<Point> points(5, Point(-0.75, -0.75, -0.75));

@@ -56,8 +56,8 @@ struct Edge_hash
 };
 
 // Whether the fan of polygon `p` from its corner `a` has only triangles that turn like the
-// polygon: each triangle's normal within 90 degrees of `normal` (the polygon's Newell normal),
-// none flat.
+// polygon: each triangle's normal within 90 degrees of `normal` (newell_normal() of `p`), none
+// flat.
 inline bool fan_turns_like_polygon(const std::vector<Vec3>& p, const Vec3& normal, std::size_t a)
 {
   const std::size_t n = p.size();
@@ -78,15 +78,13 @@ inline void triangulate_polygon(const std::vector<Vec3>& p, std::vector<std::arr
 {
   out.clear();
   const std::size_t n = p.size();
-  Vec3 normal = {0., 0., 0.};
-  for(std::size_t i = 0; i < n; ++i) {
-    const Vec3 &a = p[i], &b = p[(i + 1) % n];
-    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
-    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
-    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  if(n == 3) {
+    out.push_back({0, 1, 2});
+    return;
   }
+  const Vec3 normal = newell_normal(p);
   for(std::size_t a = 0; a < n; ++a)
-    if(n == 3 || fan_turns_like_polygon(p, normal, a)) {
+    if(fan_turns_like_polygon(p, normal, a)) {
       for(std::size_t k = 1; k + 1 < n; ++k)
         out.push_back({int(a), int((a + k) % n), int((a + k + 1) % n)});
       return;
@@ -310,11 +308,12 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
         any = true;
       }
     }
-    if(!any)
+    if(!any) {
       out.flat_polygons.push_back(index);
-    else
+    } else {
       sorted_rings.insert(sorted_rings.end(), ring.begin(), ring.end());
-    std::sort(sorted_rings.begin() + std::ptrdiff_t(ring_begin.back()), sorted_rings.end());
+      std::sort(sorted_rings.begin() + std::ptrdiff_t(ring_begin.back()), sorted_rings.end());
+    }
     ring_begin.push_back(sorted_rings.size());
     ++index;
   }

@@ -43,6 +43,21 @@ typedef std::array<int, 3> Loop_triangle;
 // here and in the holes of a chart (Chart_parameterization.h).
 constexpr std::size_t exhaustive_loop_size = 64;
 
+// Newell's normal of the loop `p`: twice its vector area, the loop turning counterclockwise
+// about it (an exact normal of a planar loop, and a mean one of any other).
+inline Vec3 newell_normal(const std::vector<Vec3>& p)
+{
+  Vec3 normal = {0., 0., 0.};
+  for(std::size_t i = 0; i < p.size(); ++i) {
+    const Vec3& a = p[i];
+    const Vec3& b = p[(i + 1) % p.size()];
+    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
+    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
+    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
+  }
+  return normal;
+}
+
 // Ear clipping of the loop `p`: the ear with the smallest inner angle first (the advancing-front
 // rule: sharp corners closed first keep the triangles well shaped), the inner side told by the
 // loop's Newell normal, ties broken by position along the loop; a reflex ear only when no other
@@ -56,14 +71,7 @@ bool clip_ears(const std::vector<Vec3>& p, const Allowed& allowed, std::vector<L
   const int n = int(p.size());
   if(n < 3)
     return false;
-  Vec3 normal = {0., 0., 0.};
-  for(int i = 0; i < n; ++i) {
-    const Vec3& a = p[std::size_t(i)];
-    const Vec3& b = p[std::size_t((i + 1) % n)];
-    normal[0] += (a[1] - b[1]) * (a[2] + b[2]);
-    normal[1] += (a[2] - b[2]) * (a[0] + b[0]);
-    normal[2] += (a[0] - b[0]) * (a[1] + b[1]);
-  }
+  const Vec3 normal = newell_normal(p);
   std::vector<int> before(p.size()), after(p.size());
   for(int i = 0; i < n; ++i) {
     before[std::size_t(i)] = (i + n - 1) % n;
