@@ -4,7 +4,7 @@
 // The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
 // minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
 // initializers and solvers, symmetric weights and their Cholesky, the default solver on a large
-// system, the result on several threads, and the quality bar of the paper's Mannequin head.
+// system, the multigrid solver, the result on several threads, and the quality bar of the paper's Mannequin head.
 
 #include "smp_test_mesh.h"
 #include "solver_configuration_eigen.h"
@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/parameterize.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_measures.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Multigrid_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Ordered_sparse_lu.h>
 #include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
 #include <CGAL/subdivision_method_3.h>
@@ -29,6 +30,8 @@
 
 #include <algorithm>
 #include <atomic>
+#include <limits>
+#include <random>
 #include <cctype>
 #include <cmath>
 #include <functional>
@@ -526,6 +529,75 @@ void check_ordered_solvers()
             "Eigen's SparseLU in a minimum degree order solves otherwise after release()");
 }
 
+// The multigrid solver. On systems of nonsymmetric positive weights (the clamped cotangent
+// weights scaled at random, so that w_ij != w_ji), its solution is the LU's to 1e-9 (its
+// tolerance is on the residual, 1e-12 of the right-hand side's norm), whatever the thread
+// count; the direct solver it gives way to solves as the LU does, bit for bit. A hierarchy
+// that cannot be built (a zero diagonal) and an iteration that cannot converge (a singular
+// system with no solution) are reported as failures.
+void check_multigrid(const std::string& name)
+{
+  Loaded l = load(name);
+  SMP::internal::Disk_component<Mesh> dc;
+  SMP_CHECK(dc.build(l.mesh, l.bhd, get(CGAL::vertex_point, l.mesh)) == SMP::OK, name << ": " << dc.message);
+  std::vector<double> w;
+  bool symmetric = false;
+  SMP_CHECK(SMP::internal::clamped_cotangent_weights(dc, w, symmetric), name << ": no weights");
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> scale(0.2, 5.);
+  for(double& x : w)
+    x *= scale(rng);
+  std::vector<SMP::internal::Vec2> uv(dc.flat.xyz.size());
+  for(std::size_t k = 0; k < dc.border.size(); ++k) {
+    const double t = 6.283185307179586 * double(k) / double(dc.border.size());
+    uv[std::size_t(dc.border[k])] = {std::cos(t), std::sin(t)};
+  }
+  typedef SMP::internal::Default_solver_traits Traits;
+  typedef SMP::internal::Weighted_laplacian_system<Traits> System;
+  Traits lu_traits, mg_traits, mg1_traits;
+  System lu(dc, false, {}, std::numeric_limits<Eigen::Index>::max()), mg(dc, false, {}, 0), mg1(dc, false, {}, 0);
+  std::vector<double> w_lu = w, w_mg = w, w_mg1 = w;
+  std::vector<SMP::internal::Vec2> uv_lu = uv, uv_mg = uv, uv_mg1 = uv;
+  SMP_CHECK(!lu.multigrid() && mg.multigrid(), name << ": the multigrid solver is not taken where it should be");
+  SMP_CHECK(lu.solve(w_lu, uv_lu, lu_traits, 2) && mg.solve(w_mg, uv_mg, mg_traits, 2) &&
+            mg1.solve(w_mg1, uv_mg1, mg1_traits, 1), name << ": a solve failed");
+  SMP_CHECK(mg.multigrid() && mg1.multigrid(), name << ": the multigrid solver gave way to the direct solver");
+  double distance = 0.;
+  for(std::size_t v = 0; v < uv.size(); ++v)
+    distance = (std::max)(distance, std::hypot(uv_lu[v][0] - uv_mg[v][0], uv_lu[v][1] - uv_mg[v][1]));
+  SMP_CHECK(distance < 1e-9, name << ": the multigrid solver and the LU differ by " << distance);
+  SMP_CHECK(uv_mg == uv_mg1, name << ": the multigrid solution depends on the number of threads");
+
+  // the direct solver in its place: the LU's map again (the weights, normalized by the first
+  // solves, are normalized alike in both)
+  mg.use_direct_solver();
+  SMP_CHECK(!mg.multigrid() && lu.solve(w_lu, uv_lu, lu_traits, 2) && mg.solve(w_mg, uv_mg, mg_traits, 2),
+            name << ": a solve failed");
+  SMP_CHECK(uv_mg == uv_lu, name << ": the direct solver after the multigrid one differs from the LU");
+  std::cout << name << ": multigrid against LU " << distance << std::endl;
+
+  // failures
+  // (on a matrix larger than the coarsest level, which SparseLU factors with pivoting)
+  const Eigen::Index size = 2 * SMP::internal::Aggregation_multigrid::coarsest_rows;
+  Eigen::SparseMatrix<double> A(size, size);
+  for(Eigen::Index i = 0; i < size; ++i)
+    A.insert(i, i ^ 1) = 1.;
+  SMP::internal::Aggregation_multigrid zero_diagonal;
+  SMP_CHECK(!zero_diagonal.compute(A), "a zero diagonal entry is not reported");
+  const int k = 60; // a ring of k vertices, its graph Laplacian: singular
+  std::vector<Eigen::Triplet<double> > entries;
+  for(int i = 0; i < k; ++i) {
+    entries.emplace_back(i, i, 2.);
+    entries.emplace_back(i, (i + 1) % k, -1.);
+    entries.emplace_back(i, (i + k - 1) % k, -1.);
+  }
+  Eigen::SparseMatrix<double> ring(k, k);
+  ring.setFromTriplets(entries.begin(), entries.end());
+  SMP::internal::Multigrid_solver singular;
+  Eigen::MatrixXd B = Eigen::MatrixXd::Ones(k, 1), X; // no x has A x = B: the rows of A sum to 0
+  SMP_CHECK(singular.compute(ring) && !singular.solve(B, X, 1), "a system without solution is not reported");
+}
+
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
 // The package's UMFPACK wrapper through CGAL's solver traits, as a user would call it: an
 // uncompressed matrix, a solve checked against Eigen's SparseLU, and a singular matrix refused.
@@ -594,10 +666,12 @@ void check_umfpack_lu()
   SMP_CHECK(wide.info() != Eigen::Success, "a singular matrix was factored by the 64-bit interface");
 }
 
-// Above 150,000 unknowns the default UMFPACK solver orders with METIS, sizes its work area from
+// Above 150,000 unknowns the package's UMFPACK solver orders with METIS, sizes its work area from
 // the symbolic estimate and then from the last factorization, hands memory back between steps
 // and frees its factors after each solve and after the call: the maps must be those of Eigen's
 // SparseLU, and a second call of the same object (which analyses again) must repeat the first.
+// The default solver there is the multigrid solver: the paper's whole iteration takes the
+// steps the LU takes, to 1e-6 in the stretch of each.
 void check_large_system()
 {
   Loaded l = load("mannequin-devil.off");
@@ -608,22 +682,40 @@ void check_large_system()
                                                     Eigen::COLAMDOrdering<int> > > Sparse_lu;
   SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Sparse_lu>
     reference(SMP::Shape_preserving_parameterizer_3<Mesh>(), SMP::parameters::number_of_iterations(1));
-  Default_smp p(SMP::parameters::number_of_iterations(1));
+  typedef CGAL::Eigen_solver_traits<SMP::internal::Umfpack_lu<CGAL::Eigen_sparse_matrix<double>::EigenType> > Umfpack_traits;
+  typedef SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Umfpack_traits> Umfpack_smp;
+  Umfpack_smp p(SMP::Shape_preserving_parameterizer_3<Mesh>(), SMP::parameters::number_of_iterations(1));
   UV_map uvr = new_uv(m, "v:uv_ref"), uv1 = new_uv(m, "v:uv1"), uv2 = new_uv(m, "v:uv2");
   check_run("207k vertices, SparseLU", m, l.bhd, reference, uvr, SMP::parameterize(m, reference, l.bhd, uvr));
-  check_run("207k vertices, default", m, l.bhd, p, uv1, SMP::parameterize(m, p, l.bhd, uv1));
+  check_run("207k vertices, UMFPACK", m, l.bhd, p, uv1, SMP::parameterize(m, p, l.bhd, uv1));
   SMP_CHECK(p.report().interior_vertices >= 150000, "only " << p.report().interior_vertices << " unknowns");
-  SMP_CHECK(max_distance(m, uv1, uvr) < 1e-9, "default and SparseLU differ by " << max_distance(m, uv1, uvr));
-  check_run("207k vertices, default again", m, l.bhd, p, uv2, SMP::parameterize(m, p, l.bhd, uv2));
+  SMP_CHECK(max_distance(m, uv1, uvr) < 1e-9, "UMFPACK and SparseLU differ by " << max_distance(m, uv1, uvr));
+  check_run("207k vertices, UMFPACK again", m, l.bhd, p, uv2, SMP::parameterize(m, p, l.bhd, uv2));
   SMP_CHECK(max_distance(m, uv1, uv2) == 0., "a second call differs by " << max_distance(m, uv1, uv2));
   std::cout << "207k vertices: U^1 " << p.report().kept().l2_stretch << ", SparseLU " << reference.report().kept().l2_stretch
             << ", max distance " << max_distance(m, uv1, uvr) << std::endl;
+
+  // the default (multigrid) solver, the paper's whole iteration, against UMFPACK's
+  Umfpack_smp direct;
+  Default_smp multigrid;
+  UV_map uvd = new_uv(m, "v:uv_direct"), uvm = new_uv(m, "v:uv_multigrid");
+  check_run("207k vertices, UMFPACK, U^opt", m, l.bhd, direct, uvd, SMP::parameterize(m, direct, l.bhd, uvd));
+  check_run("207k vertices, multigrid, U^opt", m, l.bhd, multigrid, uvm, SMP::parameterize(m, multigrid, l.bhd, uvm));
+  const auto& hd = direct.report().history;
+  const auto& hm = multigrid.report().history;
+  SMP_CHECK(hd.size() == hm.size() && direct.report().kept_step == multigrid.report().kept_step,
+            "multigrid: " << hm.size() << " steps, U^" << multigrid.report().kept_step << " kept; UMFPACK: "
+            << hd.size() << ", U^" << direct.report().kept_step);
+  for(std::size_t h = 0; h < (std::min)(hd.size(), hm.size()); ++h)
+    SMP_CHECK(std::abs(hd[h].l2_stretch - hm[h].l2_stretch) < 1e-6 * hd[h].l2_stretch,
+              "U^" << h << ": L2 " << hm[h].l2_stretch << " by the multigrid solver, " << hd[h].l2_stretch << " by UMFPACK");
+  std::cout << "207k vertices, U^opt: multigrid and UMFPACK maps differ by " << max_distance(m, uvd, uvm) << std::endl;
 
   // symmetric weights on a large system: the Cholesky in METIS's order of the vertices where
   // CHOLMOD is used, else UMFPACK; the same map as the LU of concept-only traits
   namespace P = SMP::parameters;
   const auto lowest = P::preset(SMP::Stretch_minimizing_preset::LOWEST_STRETCH).descent_iterations(0u).number_of_iterations(1u);
-  Default_smp symmetric(lowest);
+  Umfpack_smp symmetric(SMP::Shape_preserving_parameterizer_3<Mesh>(), lowest);
   SMP::Stretch_minimizing_parameterizer_3<Mesh, SMP::Shape_preserving_parameterizer_3<Mesh>, Concept_only_traits>
     concept_lu(SMP::Shape_preserving_parameterizer_3<Mesh>(), lowest);
   UV_map uvs = new_uv(m, "v:uv_symmetric"), uvc = new_uv(m, "v:uv_concept_lu");
@@ -920,6 +1012,8 @@ int run_test(int, char**)
     check_symmetric_weights(name);
   check_readme_tables();
   check_ordered_solvers();
+  for(const char* name : {"mannequin-devil.off", "holes.off"})
+    check_multigrid(name);
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
   check_umfpack_lu();
   check_large_system();

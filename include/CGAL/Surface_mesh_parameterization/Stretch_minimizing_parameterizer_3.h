@@ -482,14 +482,25 @@ private:
     const unsigned int threads = internal::thread_count(settings.threads);
     for(std::size_t h = 0;; ++h) {
       stretch.release();
-      if(!system.solve(w, uv, m_solver_traits, threads)) {
+      bool solved = system.solve(w, uv, m_solver_traits, threads);
+      internal::Flat_stretch_summary s;
+      if(solved)
+        s = stretch.evaluate(dc.flat, uv, threads);
+      if(solved && s.flipped > 0 && system.multigrid()) {
+        // the flip may be the error of the multigrid solution, exact only up to a tolerance:
+        // the direct solver settles it, for this step and the next ones
+        system.use_direct_solver();
+        solved = system.solve(w, uv, m_solver_traits, threads);
+        if(solved)
+          s = stretch.evaluate(dc.flat, uv, threads);
+      }
+      if(!solved) {
         if(best_uv.empty())
           return false;
         rep.stop = Stretch_minimizing_stop::SOLVER_FAILED;
         rep.message = "the sparse solver failed at step " + std::to_string(h) + ": the best map so far is kept";
         return true;
       }
-      internal::Flat_stretch_summary s = stretch.evaluate(dc.flat, uv, threads);
 
       Stretch_minimizing_step step = internal::make_step(h, s, start);
       step.eta = h == 0 ? 0. : eta;

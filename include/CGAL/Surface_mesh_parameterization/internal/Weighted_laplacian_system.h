@@ -7,6 +7,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
 #include <CGAL/Surface_mesh_parameterization/internal/Disk_component.h>
+#include <CGAL/Surface_mesh_parameterization/internal/Multigrid_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Sander_vertex_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
@@ -35,6 +36,12 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // the traits (which still serves where it is the faster, see `cholesky_pays()`), in the
 // elimination order of the mesh's vertices when there is one (vertex_order.h).
 //
+// Large systems with the package's default solver are solved by the multigrid solver
+// (Multigrid_solver.h) from the previous step's solution, in place of a factorization: its time
+// and memory grow with the mesh, where those of a sparse LU grow faster. It gives way to the
+// direct solver for the rest of the call if it fails, or on the caller's request (a solution
+// with a flipped face, which only rounding can explain: `use_direct_solver()`).
+//
 // Only the weights change between steps, so the sparsity pattern is built once and analysed
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and
 // v columns together. Iterative solvers start from the previous solution. Solver traits that
@@ -56,14 +63,23 @@ public:
   static constexpr bool cholesky_possible =
     Kind::eigen && !Kind::iterative && std::is_same<Matrix, Sander_vertex_solver::Matrix>::value;
 
+  // the multigrid solver takes the place of the package's default solver
+  static constexpr bool multigrid_possible = std::is_same<SolverTraits, Default_solver_traits>::value;
+  // from this many rows on, the multigrid solver is the faster (benchmark/ measures by how much)
+  static constexpr Eigen::Index multigrid_rows = 30000;
+
   // `symmetric`: the weights given to `solve()` are symmetric; `vertex_rank`: the elimination
-  // order of the vertices of `dc` (empty: the Cholesky's own).
-  Weighted_laplacian_system(const Disk_component_base& dc, bool symmetric, const std::vector<int>& vertex_rank)
+  // order of the vertices of `dc` (empty: the Cholesky's own); `multigrid_from`: the number
+  // of rows from which the multigrid solver serves, where it can.
+  Weighted_laplacian_system(const Disk_component_base& dc, bool symmetric, const std::vector<int>& vertex_rank,
+                            Eigen::Index multigrid_from = multigrid_rows)
     : m_dc(dc)
   {
     const Eigen::Index n = Eigen::Index(dc.number_of_rows());
     if constexpr(cholesky_possible)
       m_cholesky = symmetric && cholesky_pays<typename Kind::Solver>(n);
+    if constexpr(multigrid_possible)
+      m_multigrid = !m_cholesky && n >= multigrid_from;
     if(m_cholesky)
       m_order = rows_in_order(vertex_rank, dc.interior);
     std::vector<Eigen::Triplet<double> > entries;
@@ -104,6 +120,16 @@ public:
   // Whether the system is factored by the sparse Cholesky.
   bool cholesky() const { return m_cholesky; }
 
+  // Whether the next solve is by the multigrid solver.
+  bool multigrid() const { return m_multigrid; }
+
+  // The next solves are by the direct solver.
+  void use_direct_solver()
+  {
+    m_multigrid = false;
+    m_multigrid_solver.release();
+  }
+
   // Solves with the weights `w` (one per ring entry) and writes the interior rows of `uv`;
   // the border entries of `uv` are read. Unless the system is factored by the Cholesky, `w`
   // comes back divided by the weight sums of the rows. The rows are filled, and the u and v
@@ -138,24 +164,7 @@ public:
     for(std::size_t k = 0; k < m_border_entries.size(); ++k)
       m_border_weight[k] = w[m_border_entries[k]];
 
-    bool ok = true;
-    if(m_cholesky) {
-      ok = factor_and_solve(m_cholesky_solver, w, uv, threads);
-    } else if constexpr(!Kind::eigen) {
-      ok = solve_by_concept(traits, right_hand_side(uv));
-    } else if constexpr(Kind::iterative) {
-      // the preconditioner is rebuilt whole: Eigen 3.4's IncompleteLUT leaves its status
-      // unset after analyzePattern() alone
-      auto& solver = traits.solver();
-      solver.compute(m_A);
-      ok = solver.info() == Eigen::Success;
-      if(ok)
-        m_X = solver.solveWithGuess(right_hand_side(uv), m_X);
-      ok = ok && solver.info() == Eigen::Success;
-    } else {
-      ok = factor_and_solve(traits.solver(), w, uv, threads);
-    }
-    if(!ok || !m_X.allFinite())
+    if(!solve_system(w, uv, traits, threads) || !m_X.allFinite())
       return false;
     for(Eigen::Index i = 0; i < n; ++i)
       uv[m_dc.interior[i]] = {m_X(i, 0), m_X(i, 1)};
@@ -163,6 +172,32 @@ public:
   }
 
 private:
+  // m_X = the solution of the system as filled, by the solver this system uses now
+  bool solve_system(std::vector<double>& w, const std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads)
+  {
+    if(m_multigrid) {
+      if(m_multigrid_solver.compute(m_A) && m_multigrid_solver.solve(right_hand_side(uv), m_X, threads))
+        return true;
+      use_direct_solver(); // and for the rest of the call: this system is hard for it
+    }
+    if(m_cholesky)
+      return factor_and_solve(m_cholesky_solver, w, uv, threads);
+    if constexpr(!Kind::eigen) {
+      return solve_by_concept(traits, right_hand_side(uv));
+    } else if constexpr(Kind::iterative) {
+      // the preconditioner is rebuilt whole: Eigen 3.4's IncompleteLUT leaves its status
+      // unset after analyzePattern() alone
+      auto& solver = traits.solver();
+      solver.compute(m_A);
+      if(solver.info() != Eigen::Success)
+        return false;
+      m_X = solver.solveWithGuess(right_hand_side(uv), m_X);
+      return solver.info() == Eigen::Success;
+    } else {
+      return factor_and_solve(traits.solver(), w, uv, threads);
+    }
+  }
+
   // With a direct solver (the traits' or the Cholesky): the pattern analysed once, then a
   // factorization and the u and v columns; the weights are freed meanwhile and restored after.
   template <typename Solver>
@@ -265,6 +300,8 @@ private:
   const Disk_component_base& m_dc;
   bool m_cholesky = false;
   Sander_vertex_solver m_cholesky_solver{true}; // positive definite: the border holds it
+  bool m_multigrid = false;
+  Multigrid_solver m_multigrid_solver;
   std::vector<int> m_order; // the Cholesky's rows in elimination order, empty for its own
   Matrix m_A;
   std::vector<int> m_diag, m_slot; // positions in the value array (nonzeros fit an int, as Eigen's indices)

@@ -4,10 +4,10 @@
 #ifndef CGAL_SMP_INTERNAL_DEFAULT_SOLVER_H
 #define CGAL_SMP_INTERNAL_DEFAULT_SOLVER_H
 
-// The default sparse solver of the package. With CGAL's own macro
-// CGAL_SMP_USE_SPARSESUITE_SOLVERS defined (the package's CMake target defines it when
-// SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else Eigen's SparseLU in a
-// minimum degree order of the pattern (`Ordered_sparse_lu`). UMFPACK without iterative
+// The default direct sparse solver of the package (the multigrid solver takes its place on large
+// systems). With CGAL's own macro CGAL_SMP_USE_SPARSESUITE_SOLVERS defined (the package's CMake
+// target defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else
+// Eigen's SparseLU in a minimum degree order of the pattern (`Ordered_sparse_lu`). UMFPACK without iterative
 // refinement is the faster of the two on the benchmark's large meshes (benchmark/ measures by
 // how much). The type depends on the macro: it is declared in the solver configuration's
 // namespace (solver_configuration.h says why).
@@ -48,10 +48,16 @@ struct Is_umfpack<Eigen::UmfPackLU<Matrix> > : std::true_type { };
 #endif
 
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
-typedef CGAL::Eigen_solver_traits<Umfpack_lu<Eigen_sparse_matrix<double>::EigenType> > Default_solver_traits;
+typedef Umfpack_lu<Eigen_sparse_matrix<double>::EigenType> Default_direct_solver;
 #else
-typedef CGAL::Eigen_solver_traits<Ordered_sparse_lu> Default_solver_traits;
+typedef Ordered_sparse_lu Default_direct_solver;
 #endif
+
+// The traits of the default solver: the direct solver's, as a type of their own, so that the
+// multigrid solver takes its place on large systems (Weighted_laplacian_system.h) only where
+// the user chose no solver.
+struct Default_solver_traits : CGAL::Eigen_solver_traits<Default_direct_solver>
+{ };
 
 // What the package knows of solver traits `Traits`: a `CGAL::Eigen_solver_traits` (a `Solver`
 // reached by `solver()`) has its pattern analysed once and its factorization reused, the

@@ -1,0 +1,245 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_AGGREGATION_MULTIGRID_H
+#define CGAL_SMP_INTERNAL_AGGREGATION_MULTIGRID_H
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseLU>
+
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+
+// Smoothed aggregation algebraic multigrid (Vanek, Mandel and Brezina 1996) for the systems of
+// the package: rows of a mesh Laplacian with positive weights, nonzero diagonal, not necessarily
+// symmetric. One V-cycle approximates A^{-1} b; it serves as the preconditioner of a Krylov
+// solver (Multigrid_solver.h). Its setup is a few passes over the matrix, and its memory a small
+// multiple of the matrix's, where the factors of a sparse LU grow faster than the mesh: that is
+// why it takes over from the direct solvers on large meshes.
+//
+// Setup, level by level: vertices are grouped into aggregates of strongly coupled neighbours;
+// the constant on each aggregate, smoothed by one damped Jacobi step, gives the prolongation P
+// (fine x coarse); the coarse matrix is P^T A P. The smallest level is factored by Eigen's
+// SparseLU. The cycle smooths by Gauss-Seidel (forward before the coarse correction, backward
+// after), sequential and so deterministic.
+class Aggregation_multigrid
+{
+public:
+  typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_matrix;
+
+  // Work vectors of one cycle; one per thread that runs cycles at once.
+  struct Workspace
+  {
+    std::vector<Eigen::VectorXd> x, b; // solution and right-hand side per level
+  };
+
+  // Builds the hierarchy of `A` (square, nonzero diagonal). False if a level cannot be built
+  // (a zero or non-finite diagonal entry, a coarsest matrix SparseLU cannot factor).
+  template <typename Matrix>
+  bool compute(const Matrix& A)
+  {
+    release();
+    Row_matrix level = A;
+    double threshold = strength_threshold;
+    while(level.rows() > coarsest_rows) {
+      Level l;
+      l.A = std::move(level);
+      if(!inverse_diagonal(l.A, l.inv_diag))
+        return false;
+      std::vector<Eigen::Index> aggregate;
+      const Eigen::Index n_coarse = aggregates(l.A, threshold, aggregate);
+      if(n_coarse == 0 || double(n_coarse) > max_coarse_ratio * double(l.A.rows())) {
+        level = std::move(l.A); // it does not coarsen: factor it as it is
+        break;
+      }
+      l.P = smoothed_prolongation(l.A, l.inv_diag, aggregate, n_coarse);
+      l.R = l.P.transpose();
+      const Row_matrix AP = l.A * l.P;
+      level = l.R * AP;
+      level.prune(0.);
+      m_levels.push_back(std::move(l));
+      threshold *= 0.5; // coarse levels are denser and more evenly coupled
+    }
+    m_coarsest = std::move(level);
+    const Eigen::SparseMatrix<double> coarsest = m_coarsest; // SparseLU takes column-major matrices
+    m_coarse_lu = std::make_unique<Coarse_lu>();
+    m_coarse_lu->compute(coarsest);
+    return m_coarse_lu->info() == Eigen::Success;
+  }
+
+  // the matrix given to `compute()`
+  const Row_matrix& matrix() const { return m_levels.empty() ? m_coarsest : m_levels.front().A; }
+
+  std::size_t number_of_levels() const { return m_levels.size() + 1; }
+
+  Workspace workspace() const
+  {
+    Workspace w;
+    w.x.resize(number_of_levels());
+    w.b.resize(number_of_levels());
+    return w;
+  }
+
+  // x = one V-cycle applied to b, from x = 0.
+  void apply(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const
+  {
+    w.b[0] = b;
+    cycle(0, w);
+    x = w.x[0];
+  }
+
+  void release()
+  {
+    m_levels.clear();
+    m_coarsest = Row_matrix();
+    m_coarse_lu.reset();
+  }
+
+  // levels stop coarsening at this size: SparseLU factors it at once
+  static constexpr Eigen::Index coarsest_rows = 1500;
+  // a level whose aggregates keep more than this share of its rows is the last one
+  static constexpr double max_coarse_ratio = 0.9;
+  // a_ij couples i and j strongly if |a_ij| >= threshold sqrt(|a_ii a_jj|) (on the finest level)
+  static constexpr double strength_threshold = 0.08;
+  // damping of the Jacobi step that smooths the prolongation: 4/3 over a spectral radius of
+  // D^{-1} A of at most 2 (the finest rows are weakly diagonally dominant)
+  static constexpr double prolongation_damping = 2. / 3.;
+
+private:
+  typedef Eigen::SparseLU<Eigen::SparseMatrix<double> > Coarse_lu;
+
+  struct Level
+  {
+    Row_matrix A, P, R; // the level's matrix, prolongation from the next level, P^T
+    Eigen::VectorXd inv_diag;
+  };
+
+  static bool inverse_diagonal(const Row_matrix& A, Eigen::VectorXd& inv_diag)
+  {
+    inv_diag = A.diagonal();
+    for(Eigen::Index i = 0; i < inv_diag.size(); ++i) {
+      if(!(std::abs(inv_diag[i]) > 0.) || !std::isfinite(inv_diag[i]))
+        return false;
+      inv_diag[i] = 1. / inv_diag[i];
+    }
+    return true;
+  }
+
+  // Groups the rows of `A` into aggregates (`aggregate[i]`: the aggregate of row i); returns
+  // their number. First, a row none of whose strong neighbours is taken makes an aggregate with
+  // them; then the rows left join the aggregate of their strongest taken neighbour; the rows
+  // still left (no taken neighbour) make aggregates with their free neighbours.
+  static Eigen::Index aggregates(const Row_matrix& A, double threshold, std::vector<Eigen::Index>& aggregate)
+  {
+    const Eigen::Index n = A.rows();
+    const Eigen::VectorXd d = A.diagonal().cwiseAbs();
+    auto strong = [&](Eigen::Index i, Eigen::Index j, double a) {
+      return i != j && std::abs(a) >= threshold * std::sqrt(d[i] * d[j]);
+    };
+    aggregate.assign(std::size_t(n), -1);
+    Eigen::Index count = 0;
+    for(Eigen::Index i = 0; i < n; ++i) {
+      if(aggregate[std::size_t(i)] >= 0)
+        continue;
+      bool free = true, coupled = false;
+      for(Row_matrix::InnerIterator it(A, i); it && free; ++it)
+        if(strong(i, it.col(), it.value())) {
+          coupled = true;
+          free = aggregate[std::size_t(it.col())] < 0;
+        }
+      if(!free || !coupled)
+        continue;
+      aggregate[std::size_t(i)] = count;
+      for(Row_matrix::InnerIterator it(A, i); it; ++it)
+        if(strong(i, it.col(), it.value()))
+          aggregate[std::size_t(it.col())] = count;
+      ++count;
+    }
+    std::vector<Eigen::Index> joined = aggregate;
+    for(Eigen::Index i = 0; i < n; ++i) {
+      if(aggregate[std::size_t(i)] >= 0)
+        continue;
+      double strongest = 0.;
+      for(Row_matrix::InnerIterator it(A, i); it; ++it)
+        if(it.col() != i && aggregate[std::size_t(it.col())] >= 0 && std::abs(it.value()) > strongest) {
+          strongest = std::abs(it.value());
+          joined[std::size_t(i)] = aggregate[std::size_t(it.col())];
+        }
+    }
+    aggregate.swap(joined);
+    for(Eigen::Index i = 0; i < n; ++i) {
+      if(aggregate[std::size_t(i)] >= 0)
+        continue;
+      for(Row_matrix::InnerIterator it(A, i); it; ++it)
+        if(aggregate[std::size_t(it.col())] < 0)
+          aggregate[std::size_t(it.col())] = count; // row i is in its own row
+      aggregate[std::size_t(i)] = count++;
+    }
+    return count;
+  }
+
+  // P = (I - omega D^{-1} A) T, T the constant on each aggregate
+  static Row_matrix smoothed_prolongation(const Row_matrix& A, const Eigen::VectorXd& inv_diag,
+                                          const std::vector<Eigen::Index>& aggregate, Eigen::Index n_coarse)
+  {
+    std::vector<Eigen::Triplet<double> > entries;
+    entries.reserve(std::size_t(A.nonZeros()));
+    for(Eigen::Index i = 0; i < A.rows(); ++i)
+      for(Row_matrix::InnerIterator it(A, i); it; ++it) {
+        double p = -prolongation_damping * inv_diag[i] * it.value();
+        if(it.col() == i)
+          p += 1.;
+        entries.emplace_back(i, aggregate[std::size_t(it.col())], p); // duplicates are summed
+      }
+    Row_matrix P(A.rows(), n_coarse);
+    P.setFromTriplets(entries.begin(), entries.end());
+    P.prune(0.);
+    return P;
+  }
+
+  // one Gauss-Seidel sweep on A x = b, rows in increasing or decreasing order
+  static void gauss_seidel(const Row_matrix& A, const Eigen::VectorXd& inv_diag, const Eigen::VectorXd& b,
+                           Eigen::VectorXd& x, bool forward)
+  {
+    const Eigen::Index n = A.rows();
+    for(Eigen::Index k = 0; k < n; ++k) {
+      const Eigen::Index i = forward ? k : n - 1 - k;
+      double r = b[i];
+      for(Row_matrix::InnerIterator it(A, i); it; ++it)
+        if(it.col() != i)
+          r -= it.value() * x[it.col()];
+      x[i] = r * inv_diag[i];
+    }
+  }
+
+  void cycle(std::size_t k, Workspace& w) const
+  {
+    if(k == m_levels.size()) {
+      w.x[k] = m_coarse_lu->solve(w.b[k]);
+      return;
+    }
+    const Level& l = m_levels[k];
+    w.x[k].setZero(l.A.rows());
+    gauss_seidel(l.A, l.inv_diag, w.b[k], w.x[k], true);
+    w.b[k + 1].noalias() = l.R * (w.b[k] - l.A * w.x[k]);
+    cycle(k + 1, w);
+    w.x[k].noalias() += l.P * w.x[k + 1];
+    gauss_seidel(l.A, l.inv_diag, w.b[k], w.x[k], false);
+  }
+
+  std::vector<Level> m_levels;
+  Row_matrix m_coarsest;
+  std::unique_ptr<Coarse_lu> m_coarse_lu;
+};
+
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_AGGREGATION_MULTIGRID_H
