@@ -100,6 +100,9 @@ typedef SMP::Discrete_conformal_map_parameterizer_3<Mesh, Square>        Harmoni
 typedef SMP::Shape_preserving_parameterizer_3<Mesh, Square>              Floater;       // (b), SparseLU
 typedef SMP_benchmark::Intrinsic_parameterizer_3<Mesh, Square>           Intrinsic;     // (c), CGAL default solver
 typedef SMP::Stretch_minimizing_parameterizer_3<Mesh, Floater>           Stretch_minimizer;
+// the same with the default direct solver at every size (no multigrid solver on large systems)
+typedef SMP::Stretch_minimizing_parameterizer_3<
+  Mesh, Floater, CGAL::Eigen_solver_traits<SMP::internal::Default_direct_solver> > Direct_stretch_minimizer;
 typedef SMP::Mean_value_coordinates_parameterizer_3<Mesh, Square>        CGAL_MVC;
 typedef SMP::Barycentric_mapping_parameterizer_3<Mesh, Square>           CGAL_Tutte;
 typedef SMP::Discrete_authalic_parameterizer_3<Mesh, Square>             CGAL_Authalic;
@@ -216,7 +219,7 @@ bool reset_peak_memory()
   return bool(out);
 }
 
-template <typename NamedParameters>
+template <typename Minimizer = Stretch_minimizer, typename NamedParameters>
 SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters& np)
 {
   // the peak of each step (its solve and what comes before it: for U^0, the setup), read
@@ -226,7 +229,7 @@ SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters
   const bool per_step = num_vertices(c.mesh) >= step_memory_vertices;
   std::vector<double> peaks;
   bool reset = per_step && reset_peak_memory();
-  Stretch_minimizer p(np.visitor([&](const SMP::Stretch_minimizing_step&) {
+  Minimizer p(np.visitor([&](const SMP::Stretch_minimizing_step&) {
     if(per_step) {
       peaks.push_back(reset ? proc_status_kib("VmHWM") : 0.);
       reset = reset_peak_memory();
@@ -345,10 +348,11 @@ std::vector<Method> all_methods()
   const std::string bicgstab = "BiCGSTAB + ILUT (CGAL default)";
   const std::string sparse_lu = "SparseLU";
 #if defined(CGAL_SMP_USE_SPARSESUITE_SOLVERS)
-  const std::string minimizer_solver = "UMFPACK (AMD below 150k unknowns, METIS above; no refinement)";
+  const std::string direct_solver = "UMFPACK (AMD below 150k unknowns, METIS above; no refinement)";
 #else
-  const std::string minimizer_solver = sparse_lu;
+  const std::string direct_solver = "SparseLU (minimum degree order)";
 #endif
+  const std::string minimizer_solver = direct_solver + " below 30k unknowns, multigrid above";
   std::vector<Method> m = {
     {"a_harmonic", "(a) Eck et al. harmonic map (CGAL Discrete_conformal_map)", square, bicgstab,
      run_fixed<Harmonic>},
@@ -365,6 +369,11 @@ std::vector<Method> all_methods()
     {"f_uopt", "(f_h) U^opt, eta = 1", square, minimizer_solver,
      [](Context& c, Child_result& r) {
        return run_minimizer(c, r, Stretch_minimizer::default_number_of_iterations, 1.);
+     }},
+    {"uopt_direct", "(f_h) U^opt, eta = 1, the direct solver at every size", square, direct_solver,
+     [](Context& c, Child_result& r) {
+       return run_minimizer<Direct_stretch_minimizer>(
+         c, r, SMP::parameters::number_of_iterations(Stretch_minimizer::default_number_of_iterations));
      }},
     {"uopt_one_thread", "(f_h) U^opt, eta = 1, on one thread (number_of_threads(1))", square, minimizer_solver,
      [](Context& c, Child_result& r) { return run_minimizer(c, r, SMP::parameters::number_of_threads(1u)); }},
@@ -1170,6 +1179,8 @@ private:
          [&](std::size_t k) {
            return ratio(median_of(k, "f_uopt"), median_of(k, "cgal_iterative_authalic"), k, "cgal_iterative_authalic");
          });
+    line("U^opt time / U^opt time with the direct solver at every size",
+         [&](std::size_t k) { return ratio(median_of(k, "f_uopt"), median_of(k, "uopt_direct"), k, "uopt_direct"); });
     line("U^opt time on all cores / on one thread (number_of_threads(1))",
          [&](std::size_t k) {
            return ratio(median_of(k, "f_uopt"), median_of(k, "uopt_one_thread"), k, "uopt_one_thread");
