@@ -4,7 +4,8 @@
 // The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
 // minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
 // initializers and solvers, symmetric weights and their Cholesky, the default solver on a large
-// system, the multigrid solver, the result on several threads, and the quality bar of the paper's Mannequin head.
+// system, the multigrid solver, the result on several threads, and the quality bar of the
+// paper's Mannequin head.
 
 #include "smp_test_mesh.h"
 #include "solver_configuration_eigen.h"
@@ -345,6 +346,29 @@ void check_solver_concept()
             "concept-only traits and Eigen_solver_traits differ by " << max_distance(l.mesh, a, b));
 }
 
+// A bundled mesh as the linear systems see it: its disk component, its clamped cotangent
+// weights and its border on the unit circle.
+struct System_input
+{
+  Loaded l;
+  SMP::internal::Disk_component<Mesh> dc;
+  std::vector<double> w;
+  bool symmetric = false;
+  std::vector<SMP::internal::Vec2> uv;
+};
+
+void load_system_input(const std::string& name, System_input& in)
+{
+  in.l = load(name);
+  SMP_CHECK(in.dc.build(in.l.mesh, in.l.bhd, get(CGAL::vertex_point, in.l.mesh)) == SMP::OK, name << ": " << in.dc.message);
+  SMP_CHECK(SMP::internal::clamped_cotangent_weights(in.dc, in.w, in.symmetric), name << ": no weights");
+  in.uv.assign(in.dc.flat.xyz.size(), {0., 0.});
+  for(std::size_t k = 0; k < in.dc.border.size(); ++k) {
+    const double t = 6.283185307179586 * double(k) / double(in.dc.border.size());
+    in.uv[std::size_t(in.dc.border[k])] = {std::cos(t), std::sin(t)};
+  }
+}
+
 // Symmetric weights and their Cholesky. The clamped cotangent start gives w_ij = w_ji between
 // interior vertices, bit for bit, around the closed holes too and where the floor raised a
 // weight; a system of symmetric weights is factored by the Cholesky and solves as the LU of the
@@ -352,12 +376,12 @@ void check_solver_concept()
 // symmetric) takes the same steps as with traits that keep to the LU.
 void check_symmetric_weights(const std::string& name)
 {
-  Loaded l = load(name);
-  SMP::internal::Disk_component<Mesh> dc;
-  SMP_CHECK(dc.build(l.mesh, l.bhd, get(CGAL::vertex_point, l.mesh)) == SMP::OK, name << ": " << dc.message);
-  std::vector<double> w;
-  bool symmetric = false;
-  SMP_CHECK(SMP::internal::clamped_cotangent_weights(dc, w, symmetric) && symmetric, name << ": not symmetric");
+  System_input in;
+  load_system_input(name, in);
+  Loaded& l = in.l;
+  const SMP::internal::Disk_component<Mesh>& dc = in.dc;
+  const std::vector<double>& w = in.w;
+  SMP_CHECK(in.symmetric, name << ": not symmetric");
   std::size_t pairs = 0, asymmetric = 0, raised = 0;
   std::vector<SMP::internal::Vec3> ring;
   std::vector<double> raw;
@@ -386,12 +410,7 @@ void check_symmetric_weights(const std::string& name)
 
   // the Cholesky of the symmetric system against the LU of the normalized one
   typedef SMP::internal::Default_solver_traits Traits;
-  std::vector<SMP::internal::Vec2> uv_lu(dc.flat.xyz.size()), uv_ch;
-  for(std::size_t k = 0; k < dc.border.size(); ++k) {
-    const double t = 6.283185307179586 * double(k) / double(dc.border.size());
-    uv_lu[std::size_t(dc.border[k])] = {std::cos(t), std::sin(t)};
-  }
-  uv_ch = uv_lu;
+  std::vector<SMP::internal::Vec2> uv_lu = in.uv, uv_ch = in.uv;
   std::vector<SMP::internal::Vec2> uv_ordered = uv_lu;
   std::vector<double> w_lu = w, w_ch = w, w_ordered = w;
   Traits lu_traits, ch_traits, ordered_traits;
@@ -537,21 +556,15 @@ void check_ordered_solvers()
 // system with no solution) are reported as failures.
 void check_multigrid(const std::string& name)
 {
-  Loaded l = load(name);
-  SMP::internal::Disk_component<Mesh> dc;
-  SMP_CHECK(dc.build(l.mesh, l.bhd, get(CGAL::vertex_point, l.mesh)) == SMP::OK, name << ": " << dc.message);
-  std::vector<double> w;
-  bool symmetric = false;
-  SMP_CHECK(SMP::internal::clamped_cotangent_weights(dc, w, symmetric), name << ": no weights");
+  System_input in;
+  load_system_input(name, in);
+  const SMP::internal::Disk_component<Mesh>& dc = in.dc;
+  std::vector<double>& w = in.w;
+  const std::vector<SMP::internal::Vec2>& uv = in.uv;
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> scale(0.2, 5.);
   for(double& x : w)
     x *= scale(rng);
-  std::vector<SMP::internal::Vec2> uv(dc.flat.xyz.size());
-  for(std::size_t k = 0; k < dc.border.size(); ++k) {
-    const double t = 6.283185307179586 * double(k) / double(dc.border.size());
-    uv[std::size_t(dc.border[k])] = {std::cos(t), std::sin(t)};
-  }
   typedef SMP::internal::Default_solver_traits Traits;
   typedef SMP::internal::Weighted_laplacian_system<Traits> System;
   Traits lu_traits, mg_traits, mg1_traits;
@@ -576,8 +589,8 @@ void check_multigrid(const std::string& name)
   SMP_CHECK(uv_mg == uv_lu, name << ": the direct solver after the multigrid one differs from the LU");
   std::cout << name << ": multigrid against LU " << distance << std::endl;
 
-  // failures
-  // (on a matrix larger than the coarsest level, which SparseLU factors with pivoting)
+  // failures; the zero diagonal on a matrix larger than the coarsest level (which SparseLU
+  // factors, with pivoting)
   const Eigen::Index size = 2 * SMP::internal::Aggregation_multigrid::coarsest_rows;
   Eigen::SparseMatrix<double> A(size, size);
   for(Eigen::Index i = 0; i < size; ++i)

@@ -178,7 +178,7 @@ private:
         continue;
       for(Row_matrix::InnerIterator it(A, i); it; ++it)
         if(aggregate[std::size_t(it.col())] < 0)
-          aggregate[std::size_t(it.col())] = count; // row i is in its own row
+          aggregate[std::size_t(it.col())] = count;
       aggregate[std::size_t(i)] = count++;
     }
     return count;

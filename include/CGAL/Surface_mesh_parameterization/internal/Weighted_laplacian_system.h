@@ -39,8 +39,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 // Large systems with the package's default solver are solved by the multigrid solver
 // (Multigrid_solver.h) from the previous step's solution, in place of a factorization: its time
 // and memory grow with the mesh, where those of a sparse LU grow faster. It gives way to the
-// direct solver for the rest of the call if it fails, or on the caller's request (a solution
-// with a flipped face, which only rounding can explain: `use_direct_solver()`).
+// direct solver for the rest of the call if it fails, or on the caller's request
+// (`use_direct_solver()`: a solution with a flipped face, which may be the multigrid's error).
 //
 // Only the weights change between steps, so the sparsity pattern is built once and analysed
 // once by direct solvers, values are rewritten in place, and one factorization serves the u and

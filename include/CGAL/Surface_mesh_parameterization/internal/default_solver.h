@@ -7,10 +7,10 @@
 // The default direct sparse solver of the package (the multigrid solver takes its place on large
 // systems). With CGAL's own macro CGAL_SMP_USE_SPARSESUITE_SOLVERS defined (the package's CMake
 // target defines it when SuiteSparse's UMFPACK is found), UMFPACK's LU (`Umfpack_lu`); else
-// Eigen's SparseLU in a minimum degree order of the pattern (`Ordered_sparse_lu`). UMFPACK without iterative
-// refinement is the faster of the two on the benchmark's large meshes (benchmark/ measures by
-// how much). The type depends on the macro: it is declared in the solver configuration's
-// namespace (solver_configuration.h says why).
+// Eigen's SparseLU in a minimum degree order of the pattern (`Ordered_sparse_lu`). UMFPACK
+// without iterative refinement is the faster of the two on the benchmark's large meshes
+// (benchmark/ measures by how much). The type depends on the macro: it is declared in the
+// solver configuration's namespace (solver_configuration.h says why).
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
