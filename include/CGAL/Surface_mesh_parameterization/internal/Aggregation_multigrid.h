@@ -36,7 +36,7 @@ public:
   // Work vectors of one cycle; one per thread that runs cycles at once.
   struct Workspace
   {
-    std::vector<Eigen::VectorXd> x, b; // solution and right-hand side per level
+    std::vector<Eigen::VectorXd> x, b; // solution and right-hand side per coarse level (from 1)
   };
 
   // Builds the hierarchy of `A` (square, nonzero diagonal). False if a level cannot be built
@@ -53,7 +53,7 @@ public:
       if(!inverse_diagonal(l.A, l.inv_diag))
         return false;
       std::vector<Eigen::Index> aggregate;
-      const Eigen::Index n_coarse = aggregates(l.A, threshold, aggregate);
+      const Eigen::Index n_coarse = aggregates(l.A, l.inv_diag, threshold, aggregate);
       if(n_coarse == 0 || double(n_coarse) > max_coarse_ratio * double(l.A.rows())) {
         level = std::move(l.A); // it does not coarsen: factor it as it is
         break;
@@ -89,9 +89,7 @@ public:
   // x = one V-cycle applied to b, from x = 0.
   void apply(const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const
   {
-    w.b[0] = b;
-    cycle(0, w);
-    x = w.x[0];
+    cycle(0, b, x, w);
   }
 
   void release()
@@ -135,12 +133,12 @@ private:
   // their number. First, a row none of whose strong neighbours is taken makes an aggregate with
   // them; then the rows left join the aggregate of their strongest taken neighbour; the rows
   // still left (no taken neighbour) make aggregates with their free neighbours.
-  static Eigen::Index aggregates(const Row_matrix& A, double threshold, std::vector<Eigen::Index>& aggregate)
+  static Eigen::Index aggregates(const Row_matrix& A, const Eigen::VectorXd& inv_diag, double threshold,
+                                 std::vector<Eigen::Index>& aggregate)
   {
     const Eigen::Index n = A.rows();
-    const Eigen::VectorXd d = A.diagonal().cwiseAbs();
     auto strong = [&](Eigen::Index i, Eigen::Index j, double a) {
-      return i != j && std::abs(a) >= threshold * std::sqrt(d[i] * d[j]);
+      return i != j && std::abs(a) * std::sqrt(std::abs(inv_diag[i] * inv_diag[j])) >= threshold;
     };
     aggregate.assign(std::size_t(n), -1);
     Eigen::Index count = 0;
@@ -218,19 +216,20 @@ private:
     }
   }
 
-  void cycle(std::size_t k, Workspace& w) const
+  // x = the V-cycle from level k down applied to b; the coarser levels' vectors in `w`
+  void cycle(std::size_t k, const Eigen::VectorXd& b, Eigen::VectorXd& x, Workspace& w) const
   {
     if(k == m_levels.size()) {
-      w.x[k] = m_coarse_lu->solve(w.b[k]);
+      x = m_coarse_lu->solve(b);
       return;
     }
     const Level& l = m_levels[k];
-    w.x[k].setZero(l.A.rows());
-    gauss_seidel(l.A, l.inv_diag, w.b[k], w.x[k], true);
-    w.b[k + 1].noalias() = l.R * (w.b[k] - l.A * w.x[k]);
-    cycle(k + 1, w);
-    w.x[k].noalias() += l.P * w.x[k + 1];
-    gauss_seidel(l.A, l.inv_diag, w.b[k], w.x[k], false);
+    x.setZero(l.A.rows());
+    gauss_seidel(l.A, l.inv_diag, b, x, true);
+    w.b[k + 1].noalias() = l.R * (b - l.A * x);
+    cycle(k + 1, w.b[k + 1], w.x[k + 1], w);
+    x.noalias() += l.P * w.x[k + 1];
+    gauss_seidel(l.A, l.inv_diag, b, x, false);
   }
 
   std::vector<Level> m_levels;

@@ -176,8 +176,10 @@ inline void separate_repeated_polygons(Atlas_triangles& m, const std::vector<int
       continue;
     any = true;
     seen.clear();
-    for(std::size_t i = a; i < b; ++i) // the polygons of one hash, in their order
-      repeat[by_hash[i].second] = seen[std::vector<int>(ring(by_hash[i].second).first, ring(by_hash[i].second).second)]++;
+    for(std::size_t i = a; i < b; ++i) { // the polygons of one hash, in their order
+      const auto r = ring(by_hash[i].second);
+      repeat[by_hash[i].second] = seen[std::vector<int>(r.first, r.second)]++;
+    }
   }
   if(!any)
     return;
