@@ -219,8 +219,13 @@ bool reset_peak_memory()
   return bool(out);
 }
 
+// How run_minimizer() calls the parameterizer: through CGAL's free function parameterize(), which
+// resolves to the package's overload for this class, or as CGAL's own function body does (its
+// vertex numbering by PMP::connected_component(), then the member function)
+enum class Call { FREE_FUNCTION, CGAL_BODY };
+
 template <typename Minimizer = Stretch_minimizer, typename NamedParameters>
-SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters& np)
+SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters& np, Call call = Call::FREE_FUNCTION)
 {
   // the peak of each step (its solve and what comes before it: for U^0, the setup), read
   // after the step and reset for the next; on large meshes only, where reading /proc at every
@@ -236,7 +241,14 @@ SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters
     }
     return true;
   }));
-  const SMP::Error_code e = timed(r, [&] { return SMP::parameterize(c.mesh, p, c.bhd, c.uv); });
+  const SMP::Error_code e = timed(r, [&] {
+    if(call == Call::FREE_FUNCTION)
+      return SMP::parameterize(c.mesh, p, c.bhd, c.uv);
+    auto vimap = get(CGAL::dynamic_vertex_property_t<int>(), c.mesh);
+    SMP::internal::fill_index_map_of_cc(c.bhd, c.mesh, vimap);
+    auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), c.mesh);
+    return p.parameterize(c.mesh, c.bhd, c.uv, vimap, vpmap);
+  });
   const SMP::Stretch_minimizing_report& rep = p.report();
   r.history_size = int(std::min<std::size_t>(rep.history.size(), max_history));
   for(int h = 0; h < r.history_size; ++h) {
@@ -374,6 +386,12 @@ std::vector<Method> all_methods()
      [](Context& c, Child_result& r) {
        return run_minimizer<Direct_stretch_minimizer>(
          c, r, SMP::parameters::number_of_iterations(Stretch_minimizer::default_number_of_iterations));
+     }},
+    {"uopt_cgal_body", "(f_h) U^opt, eta = 1, called as CGAL's parameterize() body calls it (its vertex numbering)",
+     square, minimizer_solver,
+     [](Context& c, Child_result& r) {
+       return run_minimizer(c, r, SMP::parameters::number_of_iterations(Stretch_minimizer::default_number_of_iterations),
+                            Call::CGAL_BODY);
      }},
     {"uopt_one_thread", "(f_h) U^opt, eta = 1, on one thread (number_of_threads(1))", square, minimizer_solver,
      [](Context& c, Child_result& r) { return run_minimizer(c, r, SMP::parameters::number_of_threads(1u)); }},
@@ -1181,6 +1199,8 @@ private:
          });
     line("U^opt time / U^opt time with the direct solver at every size",
          [&](std::size_t k) { return ratio(median_of(k, "f_uopt"), median_of(k, "uopt_direct"), k, "uopt_direct"); });
+    line("U^opt time / U^opt called as CGAL's parameterize() body calls it (CGAL's vertex numbering)",
+         [&](std::size_t k) { return ratio(median_of(k, "f_uopt"), median_of(k, "uopt_cgal_body"), k, "uopt_cgal_body"); });
     line("U^opt time on all cores / on one thread (number_of_threads(1))",
          [&](std::size_t k) {
            return ratio(median_of(k, "f_uopt"), median_of(k, "uopt_one_thread"), k, "uopt_one_thread");

@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The iteration on every bundled disk mesh: no flipped face at any step, the kept step is the
-// minimum of the history, U^1 below U^0, the iteration cap, the options and the visitor, the
+// minimum of the history, U^1 below U^0, the package's overload of CGAL's free function
+// parameterize(), the iteration cap, the options and the visitor, the
 // initializers and solvers, symmetric weights and their Cholesky, the default solver on a large
 // system, the multigrid solver, the result on several threads, and the quality bar of the
 // paper's Mannequin head.
@@ -24,6 +25,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Multigrid_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Ordered_sparse_lu.h>
 #include <CGAL/Surface_mesh_parameterization/internal/ring_weights.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <Eigen/IterativeLinearSolvers>
@@ -1003,8 +1005,62 @@ void check_readme_tables()
   SMP_CHECK(rows.size() >= 4, "README borders table: " << rows.size() << " rows");
 }
 
+// The package's overload of CGAL's free function parameterize() for this class: it is the one
+// called (a null halfedge gets an error code, where CGAL's function has a precondition), it
+// numbers the vertices of the component as CGAL's function does (in the same order on a mesh
+// of one component; on two, the component's vertices from 0 and the others -1) and the map is
+// the member function's, bit for bit.
+void check_free_function()
+{
+  Loaded l = load("three_peaks.off");
+  Mesh& m = l.mesh;
+  UV_map uv = new_uv(m, "v:uv"), uv_member = new_uv(m, "v:uv_member");
+  Default_smp p;
+  SMP_CHECK(SMP::parameterize(m, p, Mesh::null_halfedge(), uv) == SMP::ERROR_WRONG_PARAMETER,
+            "the free function with a null halfedge: " << p.report().message);
+
+  auto ours = get(CGAL::dynamic_vertex_property_t<int>(), m), cgal = get(CGAL::dynamic_vertex_property_t<int>(), m);
+  SMP::internal::number_component_vertices(l.bhd, m, ours);
+  SMP::internal::fill_index_map_of_cc(l.bhd, m, cgal);
+  bool same = true;
+  for(vertex_descriptor v : vertices(m))
+    same = same && get(ours, v) == get(cgal, v);
+  SMP_CHECK(same, "one component: the vertices are numbered otherwise than by CGAL's parameterize()");
+
+  const std::size_t nv = num_vertices(m);
+  Mesh twice = m;
+  CGAL::copy_face_graph(m, twice); // a second component, its vertices after the first's
+  auto index = get(CGAL::dynamic_vertex_property_t<int>(), twice);
+  const halfedge_descriptor second = *std::find_if(halfedges(twice).begin(), halfedges(twice).end(), [&](halfedge_descriptor h) {
+    return is_border(h, twice) && std::size_t(source(h, twice)) >= nv;
+  });
+  SMP::internal::number_component_vertices(second, twice, index);
+  std::vector<int> seen(nv, 0);
+  bool numbered = true;
+  for(vertex_descriptor v : vertices(twice)) {
+    const int i = get(index, v);
+    if(std::size_t(v) < nv)
+      numbered = numbered && i == -1;
+    else if(i >= 0 && std::size_t(i) < nv)
+      ++seen[std::size_t(i)];
+    else
+      numbered = false;
+  }
+  SMP_CHECK(numbered && std::count(seen.begin(), seen.end(), 1) == std::ptrdiff_t(nv),
+            "two components: the second one's vertices are not numbered 0 to n - 1, the first one's -1");
+
+  SMP_CHECK(SMP::parameterize(m, p, l.bhd, uv) == SMP::OK, "the free function failed: " << p.report().message);
+  auto vimap = get(CGAL::dynamic_vertex_property_t<int>(), m);
+  auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), m);
+  SMP::internal::fill_index_map_of_cc(l.bhd, m, vimap);
+  Default_smp member;
+  SMP_CHECK(member.parameterize(m, l.bhd, uv_member, vimap, vpmap) == SMP::OK && max_distance(m, uv, uv_member) == 0.,
+            "the free function and the member function differ");
+}
+
 int run_test(int, char**)
 {
+  check_free_function();
   for(const char* name : {"nefertiti.off", "mesh_with_border.off", "patch-01.off", "three_peaks.off",
                           "mushroom.off", "mannequin-devil.off"}) {
     check_disk_mesh(name);

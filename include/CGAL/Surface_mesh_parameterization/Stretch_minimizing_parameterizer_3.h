@@ -23,6 +23,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/Stopping_rule.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Stretch_minimizing_settings.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Stretch_update_ratios.h>
+#include <CGAL/Surface_mesh_parameterization/internal/component_vertex_index.h>
 #include <CGAL/Surface_mesh_parameterization/internal/Weighted_laplacian_system.h>
 #include <CGAL/Surface_mesh_parameterization/internal/default_solver.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
@@ -342,9 +343,8 @@ public:
   /// `report().message` says more. On an error, no interior vertex is written (the border
   /// parameterizer may already have written the border).
   ///
-  /// A null `bhd` gets an error code here, but CGAL 5.5.1's free function
-  /// `CGAL::Surface_mesh_parameterization::parameterize()` uses `bhd` before it calls this
-  /// function: check `bhd` before calling the free function, or call this member.
+  /// A null `bhd` gets an error code here, and through the free function
+  /// `CGAL::Surface_mesh_parameterization::parameterize()` of this class (below) too.
   template <typename VertexUVmap, typename VertexIndexMap, typename VertexParameterizedMap,
             typename NamedParameters = parameters::Default_named_parameters>
   Error_code parameterize(Triangle_mesh& mesh,
@@ -597,6 +597,33 @@ private:
   std::shared_ptr<internal::Shared_report<Stretch_minimizing_report> > m_report; // shared by copies, see the class comment
   std::shared_ptr<std::mutex> m_solver_mutex; // held by a call: copies share m_solver_traits' solver
 };
+
+/// \ingroup PkgStretchMinimizingParameterizationRef
+///
+/// CGAL's free function `CGAL::Surface_mesh_parameterization::parameterize(mesh, parameterizer, bhd, uvmap)`
+/// for this class: overload resolution picks it when that function is called as CGAL's manual
+/// shows, with the same arguments and result. It numbers the vertices of the component of `bhd`
+/// by a walk over its faces, where CGAL's function finds the component with
+/// `CGAL::Polygon_mesh_processing::connected_component()`, whose `std::set` of faces takes much
+/// of the time of a call on meshes of millions of faces; and a null or inner `bhd` gets an error
+/// code (see `Stretch_minimizing_parameterizer_3::parameterize()`), where CGAL's function has a
+/// precondition.
+///
+/// \param mesh the triangle mesh
+/// \param parameterizer the parameterizer (copied, as by CGAL's function: its `report()` is shared)
+/// \param bhd a halfedge on the border of the component to parameterize
+/// \param uvmap receives the parameterization of the vertices of that component
+template <class TriangleMesh, class InitialParameterizer, class SolverTraits, class HD, class VertexUVmap>
+Error_code parameterize(TriangleMesh& mesh,
+                        Stretch_minimizing_parameterizer_3<TriangleMesh, InitialParameterizer, SolverTraits> parameterizer,
+                        HD bhd,
+                        VertexUVmap uvmap)
+{
+  auto vimap = get(CGAL::dynamic_vertex_property_t<int>(), mesh);
+  internal::number_component_vertices(bhd, mesh, vimap);
+  auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), mesh);
+  return parameterizer.parameterize(mesh, bhd, uvmap, vimap, vpmap);
+}
 
 CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace Surface_mesh_parameterization
