@@ -7,14 +7,16 @@
 // The vertex numbering that CGAL's free function parameterize() hands to a parameterizer (the
 // vertices of one connected component numbered from 0, the others -1), made from the faces of
 // component_faces(): CGAL's own (internal::fill_index_map_of_cc()) finds the component by
-// PMP::connected_component(), whose std::set of faces takes the larger part of a call's time
-// outside the solves on meshes of millions of faces.
+// PMP::connected_component(), whose std::set of faces is a sizeable share of a call's time on
+// meshes of millions of faces (the benchmark's method uopt_cgal_body measures it).
 
 #include <CGAL/Surface_mesh_parameterization/internal/component_faces.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
 #include <boost/graph/graph_traits.hpp>
+
+#include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
