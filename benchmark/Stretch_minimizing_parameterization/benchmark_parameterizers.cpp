@@ -219,6 +219,15 @@ bool reset_peak_memory()
   return bool(out);
 }
 
+// The vertex numbering that CGAL's free function parameterize() makes (through
+// PMP::connected_component()), for the calls of a parameterizer's member function as CGAL's makes them
+auto cgal_vertex_index(Context& c)
+{
+  auto vimap = get(CGAL::dynamic_vertex_property_t<int>(), c.mesh);
+  SMP::internal::fill_index_map_of_cc(c.bhd, c.mesh, vimap);
+  return vimap;
+}
+
 // How run_minimizer() calls the parameterizer: through CGAL's free function parameterize(), which
 // resolves to the package's overload for this class, or as CGAL's own function body does (its
 // vertex numbering by PMP::connected_component(), then the member function)
@@ -244,10 +253,7 @@ SMP::Error_code run_minimizer(Context& c, Child_result& r, const NamedParameters
   const SMP::Error_code e = timed(r, [&] {
     if(call == Call::FREE_FUNCTION)
       return SMP::parameterize(c.mesh, p, c.bhd, c.uv);
-    auto vimap = get(CGAL::dynamic_vertex_property_t<int>(), c.mesh);
-    SMP::internal::fill_index_map_of_cc(c.bhd, c.mesh, vimap);
-    auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), c.mesh);
-    return p.parameterize(c.mesh, c.bhd, c.uv, vimap, vpmap);
+    return p.parameterize(c.mesh, c.bhd, c.uv, cgal_vertex_index(c), get(CGAL::dynamic_vertex_property_t<bool>(), c.mesh));
   });
   const SMP::Stretch_minimizing_report& rep = p.report();
   r.history_size = int(std::min<std::size_t>(rep.history.size(), max_history));
@@ -298,8 +304,7 @@ SMP::Error_code run_iterative_authalic(Context& c, Child_result& r)
   std::streambuf* out = std::cout.rdbuf(&null);
   std::streambuf* err = std::cerr.rdbuf(&null);
 
-  auto vimap = get(CGAL::dynamic_vertex_property_t<int>(), c.mesh);
-  SMP::internal::fill_index_map_of_cc(c.bhd, c.mesh, vimap);
+  auto vimap = cgal_vertex_index(c);
   auto vpmap = get(CGAL::dynamic_vertex_property_t<bool>(), c.mesh);
   unsigned int iterations = 15; // in: the cap; out: the iteration kept
   CGAL_Iterative_authalic p;
