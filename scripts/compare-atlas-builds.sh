@@ -5,21 +5,35 @@
 # stretch, seam share and utilization (deterministic: the same in every run), and whether the
 # two OBJ files are the same byte for byte (a change meant to keep every atlas). From the root of
 # the repository:
-#   bash scripts/compare-atlas-builds.sh [-r RUNS] TOOL_BEFORE TOOL_AFTER MESH...
+#   bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH...
 # TOOL_*: smp-parameterize executables (e.g. build/release/tools/smp-parameterize of two
-# checkouts); RUNS defaults to 3. Writes a markdown table and the totals to standard output.
+# checkouts); RUNS defaults to 3. BUSY (default 0): processes that keep a core busy beside the
+# tools all along, as other work on a shared machine does. Writes a markdown table and the
+# totals to standard output.
 set -euo pipefail
 
 runs=3
-if [ "${1:-}" = "-r" ]; then runs="$2"; shift 2; fi
-[ $# -ge 3 ] || { echo "usage: bash scripts/compare-atlas-builds.sh [-r RUNS] TOOL_BEFORE TOOL_AFTER MESH..." >&2; exit 2; }
+busy=0
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -r) runs="$2"; shift 2 ;;
+    -l) busy="$2"; shift 2 ;;
+    *) break ;;
+  esac
+done
+[ $# -ge 3 ] || { echo "usage: bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH..." >&2; exit 2; }
 before="$(realpath "$1")"
 after="$(realpath "$2")"
 shift 2
 work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+pids=()
+trap 'rm -rf "$work"; for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done' EXIT
+for _ in $(seq "$busy"); do
+  sh -c 'while :; do :; done' &
+  pids+=("$!")
+done
 
-echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns"
+echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns, $busy busy processes beside"
 echo
 echo "| mesh | charts | L2 | seam % | utilization | atlas s (least) | same OBJ |"
 echo "|---|---:|---:|---:|---:|---:|---|"

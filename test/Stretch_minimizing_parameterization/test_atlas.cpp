@@ -21,6 +21,8 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -30,7 +32,9 @@
 #include <map>
 #include <memory>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace test_atlas {
@@ -1688,6 +1692,38 @@ void only_flat_polygons()
     SMP_CHECK(a.uv.size() == polygons.size() && a.uv[f].size() == polygons[f].size(), "only flat polygons: corners lost");
 }
 
+// A task handed to the packing's second thread runs once, there (withdraw() false) or not at all
+// (withdraw() true: the caller does it), and an exception it throws there reaches the caller.
+void second_thread()
+{
+  namespace I = SMP::internal;
+  I::Second_thread second;
+  std::atomic<int> runs(0);
+  int withdrawn = 0, waited = 0;
+  for(int i = 0; i < 2000; ++i) {
+    const int before = runs.load();
+    second.hand_over([&runs] { ++runs; });
+    if(i % 2 == 1) // some tasks left time to start
+      std::this_thread::sleep_for(std::chrono::microseconds(50));
+    const bool back = second.withdraw();
+    (back ? withdrawn : waited) += 1;
+    SMP_CHECK(runs.load() == before + (back ? 0 : 1), "second thread: task " << i << " ran " << runs.load() - before << " times");
+  }
+  std::cout << "second thread: " << waited << " tasks run there, " << withdrawn << " withdrawn\n";
+  bool thrown = false;
+  for(int i = 0; i < 1000 && !thrown; ++i) {
+    second.hand_over([] { throw std::runtime_error("task"); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    try {
+      if(second.withdraw()) continue;
+    } catch(const std::runtime_error&) {
+      thrown = true;
+    }
+    SMP_CHECK(thrown, "second thread: a task that threw there, withdraw() did not throw");
+  }
+  SMP_CHECK(thrown, "second thread: no task started there in 1000 tries of 1 ms");
+}
+
 // The packing skips most places when it searches one for a chart (whole free runs, rows that
 // cannot hold it, the rows of the chart in a chosen order); it must still find the place an
 // exhaustive search finds: the smallest square holding the charts so far, then the lowest top,
@@ -1802,6 +1838,7 @@ int run_test(int argc, char** argv)
     return smp_test::summary();
   }
   bad_input();
+  second_thread();
   packing_search();
   chart_of_two_pieces();
   chart_orientation();

@@ -16,6 +16,7 @@
 // depend on their number.
 
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Cell_bitmap.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Second_thread.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/sort_by_vertex.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
@@ -27,12 +28,12 @@
 
 #include <algorithm>
 #include <array>
-#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <functional>
 #include <iterator>
-#include <thread>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -512,9 +513,9 @@ private:
 // the square, -1 if it would exceed `limit` cells. A turn whose mask is that of a lower turn
 // (a chart symmetric under the half turn, as small compact ones often are) is not searched: it
 // would find the same place, and the lower turn wins ties. With `threads` >= 2, a second thread
-// searches the higher half of the turns left while this one searches the others: the place of
-// each half is the best of its turns whatever the other half found (that only bounds the
-// search), so the layout is the same.
+// searches the higher half of the turns left while this one searches the others (or this one
+// after them, if the other has not started by then): the place of each half is the best of its
+// turns whatever the other half found (that only bounds the search), so the layout is the same.
 inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, const std::vector<double>& size,
                          long limit, std::vector<long>& at_x, std::vector<long>& at_y, std::vector<int>& turn,
                          unsigned int threads = 1)
@@ -551,51 +552,21 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
     }
     return p;
   };
-  // the search of the higher turns on a second thread, a chart at a time: `task` is the chart
-  // to place (`none`: no chart), set by this thread and taken back by the other once `half`
-  // holds its place; the thread is stopped and joined however this function ends
-  constexpr std::size_t none = std::size_t(-1);
-  std::atomic<std::size_t> task(none);
-  std::atomic<bool> done(false), stop(false);
-  Place half;
-  struct Helper
-  {
-    std::thread thread;
-    std::atomic<bool>* stop;
-    ~Helper()
-    {
-      if(!thread.joinable()) return;
-      stop->store(true, std::memory_order_release);
-      thread.join();
-    }
-  } helper{std::thread(), &stop};
-  if(threads >= 2 && n >= 2) {
-    try {
-      helper.thread = std::thread([&]() {
-        for(;;) {
-          std::size_t i = task.load(std::memory_order_acquire);
-          for(; i == none; i = task.load(std::memory_order_acquire)) {
-            if(stop.load(std::memory_order_acquire)) return;
-            std::this_thread::yield();
-          }
-          half = best_of(i, true, Place());
-          task.store(none, std::memory_order_relaxed);
-          done.store(true, std::memory_order_release);
-        }
-      });
-    } catch(const std::exception&) {
-      // no thread: every turn is searched here
-    }
-  }
+  Place half; // of the higher turns (before the thread: its task writes there until it stops)
+  std::unique_ptr<Second_thread> second;
+  if(threads >= 2 && n >= 2)
+    second = std::make_unique<Second_thread>();
   for(std::size_t i : order) {
     Place p;
-    if(helper.thread.joinable()) {
-      done.store(false, std::memory_order_relaxed);
-      task.store(i, std::memory_order_release);
+    if(second) {
+      half = Place();
+      second->hand_over([&best_of, &half, i] { half = best_of(i, true, Place()); });
+      const auto start = std::chrono::steady_clock::now();
       p = best_of(i, false, Place());
-      while(!done.load(std::memory_order_acquire))
-        std::this_thread::yield();
-      if(half.side >= 0 && better_place(half.side, half.top, p.side, p.top))
+      // the thread may start on its half as late as this one took for its own
+      if(second->withdraw(std::chrono::steady_clock::now() - start))
+        p = best_of(i, true, p);
+      else if(half.side >= 0 && better_place(half.side, half.top, p.side, p.top))
         p = half;
     } else { // the higher turns bounded by the place of the others
       p = best_of(i, true, best_of(i, false, Place()));
