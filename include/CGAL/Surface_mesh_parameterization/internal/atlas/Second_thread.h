@@ -74,7 +74,8 @@ public:
   // will not run), else waits until it has run (false); an exception the task threw is thrown here.
   bool withdraw(Clock::duration grace = Clock::duration::zero())
   {
-    spin([this] { return m_state.load(std::memory_order_acquire) != PENDING; }, grace);
+    if(m_thread.joinable())
+      spin([this] { return m_state.load(std::memory_order_acquire) != PENDING; }, grace);
     int pending = PENDING;
     if(m_state.compare_exchange_strong(pending, IDLE, std::memory_order_acq_rel)) {
       m_task = nullptr;
