@@ -365,6 +365,18 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
   return false;
 }
 
+// Whether the PLY header of `file` declares triangle strips (`element tristrips`, as some
+// scanned meshes are stored), which CGAL's PLY reader does not read.
+inline bool ply_has_triangle_strips(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  for(int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines)
+    if(line.rfind("element tristrips", 0) == 0)
+      return true;
+  return false;
+}
+
 } // namespace internal
 
 // The polygons of `file`, as they are (no repair). False, with a message, if none can be read.
@@ -375,6 +387,9 @@ bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<
   const bool ok = internal::read_polygons(file, points, polygons, error);
   if(ok && !polygons.empty())
     return true;
+  if(error.empty() && ok && internal::lower_extension(file) == ".ply" && internal::ply_has_triangle_strips(file))
+    error = file + " holds no polygon: its triangles are stored as triangle strips (PLY element tristrips), "
+                   "which are not read; write them as faces (element face)";
   if(error.empty())
     error = ok ? file + " holds no polygon (" + std::to_string(points.size()) + " points)" : "cannot read polygons from " + file;
   return false;

@@ -301,6 +301,11 @@ void check_errors()
                                       "property float z\nelement face 0\nproperty list uchar int vertex_indices\n"
                                       "end_header\n0 0 0\n1 0 0\n0 1 0\n";
   check_error("a point set", "points_only.ply --atlas", "no polygon");
+  // triangle strips (Stanford's igea.ply is stored so): not read by CGAL, and the message says so
+  std::ofstream("strips.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+                                 "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n";
+  check_error("triangle strips", "strips.ply --atlas", "tristrips");
 }
 
 // An OBJ file whose long lines go on after a backslash (as Rhino writes them), with indices
