@@ -559,7 +559,6 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
   for(std::size_t i : order) {
     Place p;
     if(second) {
-      half = Place();
       second->hand_over([&best_of, &half, i] { half = best_of(i, true, Place()); });
       const auto start = std::chrono::steady_clock::now();
       p = best_of(i, false, Place());
