@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -182,23 +183,45 @@ private:
     return count;
   }
 
-  // P = (I - omega D^{-1} A) T, T the constant on each aggregate
+  // P = (I - omega D^{-1} A) T, T the constant on each aggregate. Row i of P is row i of A
+  // gathered by aggregate, written in place: a row has a few entries, where building P from
+  // triplets sorts and copies all of them twice. The entries of one aggregate are summed in the
+  // order of the row (as the triplets summed them), exact zeros are left out.
   static Row_matrix smoothed_prolongation(const Row_matrix& A, const Eigen::VectorXd& inv_diag,
                                           const std::vector<Eigen::Index>& aggregate, Eigen::Index n_coarse)
   {
-    std::vector<Eigen::Triplet<double> > entries;
-    entries.reserve(std::size_t(A.nonZeros()));
-    for(Eigen::Index i = 0; i < A.rows(); ++i)
+    typedef Row_matrix::StorageIndex Index;
+    std::vector<Index> outer(std::size_t(A.rows()) + 1, 0), inner;
+    std::vector<double> values;
+    inner.reserve(std::size_t(A.nonZeros()));
+    values.reserve(std::size_t(A.nonZeros()));
+    std::vector<std::pair<Index, double> > row; // (aggregate, entry) of one row
+    for(Eigen::Index i = 0; i < A.rows(); ++i) {
+      row.clear();
       for(Row_matrix::InnerIterator it(A, i); it; ++it) {
         double p = -prolongation_damping * inv_diag[i] * it.value();
         if(it.col() == i)
           p += 1.;
-        entries.emplace_back(i, aggregate[std::size_t(it.col())], p); // duplicates are summed
+        row.emplace_back(Index(aggregate[std::size_t(it.col())]), p);
       }
-    Row_matrix P(A.rows(), n_coarse);
-    P.setFromTriplets(entries.begin(), entries.end());
-    P.prune(0.);
-    return P;
+      for(std::size_t k = 1; k < row.size(); ++k) // insertion sort: stable, and rows are short
+        for(std::size_t l = k; l > 0 && row[l - 1].first > row[l].first; --l)
+          std::swap(row[l - 1], row[l]);
+      for(std::size_t k = 0; k < row.size();) {
+        double sum = row[k].second;
+        std::size_t l = k + 1;
+        for(; l < row.size() && row[l].first == row[k].first; ++l)
+          sum += row[l].second;
+        if(sum != 0.) {
+          inner.push_back(row[k].first);
+          values.push_back(sum);
+        }
+        k = l;
+      }
+      outer[std::size_t(i) + 1] = Index(inner.size());
+    }
+    return Eigen::Map<const Row_matrix>(A.rows(), n_coarse, Eigen::Index(inner.size()), outer.data(), inner.data(),
+                                        values.data());
   }
 
   // one Gauss-Seidel sweep on A x = b, rows in increasing or decreasing order
