@@ -2,7 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // How the tools read a mesh file (OFF, OBJ, PLY, STL: CGAL's readers, by the file's extension;
-// a plain ASCII OFF file by read_plain_off(), faster),
+// a plain ASCII OFF file by read_plain_off(), faster; a PLY file of triangle strips by
+// smp_ply_strips.h),
 // shared with the fuzz harness so that it tests what users run. A file that cannot be read
 // gives a message, never an exception: an OFF or PLY file is checked first where CGAL 5.5.1's
 // readers would misbehave (see check_off() and check_ply()), and an exception from a reader
@@ -15,6 +16,8 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Surface_mesh.h>
+
+#include "smp_ply_strips.h"
 
 #include <algorithm>
 #include <cctype>
@@ -366,7 +369,7 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
 }
 
 // Whether the PLY header of `file` declares triangle strips (`element tristrips`, as some
-// scanned meshes are stored), which CGAL's PLY reader does not read.
+// scanned meshes are stored), which CGAL's PLY reader does not read (smp_ply_strips.h does).
 inline bool ply_has_triangle_strips(const std::string& file)
 {
   std::ifstream in(file, std::ios::binary);
@@ -384,12 +387,23 @@ template <typename Point>
 bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
                std::string& error)
 {
-  const bool ok = internal::read_polygons(file, points, polygons, error);
+  bool ok = internal::read_polygons(file, points, polygons, error);
+  if(ok && polygons.empty() && error.empty() && internal::lower_extension(file) == ".ply" &&
+     internal::ply_has_triangle_strips(file)) {
+    try {
+      ok = internal::read_ply_triangle_strips(file, points, polygons, error);
+    } catch(const std::bad_alloc&) {
+      ok = false;
+      error = "out of memory while reading " + file;
+    } catch(const std::exception& e) {
+      ok = false;
+      error = "cannot read " + file + ": " + e.what();
+    }
+    if(!ok)
+      return false;
+  }
   if(ok && !polygons.empty())
     return true;
-  if(error.empty() && ok && internal::lower_extension(file) == ".ply" && internal::ply_has_triangle_strips(file))
-    error = file + " holds no polygon: its triangles are stored as triangle strips (PLY element tristrips), "
-                   "which are not read; write them as faces (element face)";
   if(error.empty())
     error = ok ? file + " holds no polygon (" + std::to_string(points.size()) + " points)" : "cannot read polygons from " + file;
   return false;

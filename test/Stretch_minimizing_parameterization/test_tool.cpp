@@ -24,8 +24,10 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
@@ -301,11 +303,93 @@ void check_errors()
                                       "property float z\nelement face 0\nproperty list uchar int vertex_indices\n"
                                       "end_header\n0 0 0\n1 0 0\n0 1 0\n";
   check_error("a point set", "points_only.ply --atlas", "no polygon");
-  // triangle strips (Stanford's igea.ply is stored so): not read by CGAL, and the message says so
+}
+
+// The faces of an OBJ file the tool wrote, as written.
+std::vector<std::string> obj_faces(const std::string& file)
+{
+  std::ifstream obj(file);
+  std::vector<std::string> faces;
+  for(std::string line; std::getline(obj, line);)
+    if(line.rfind("f ", 0) == 0) faces.push_back(line);
+  return faces;
+}
+
+// A PLY file of 6 vertices on a 3 x 2 grid (x, y, z and a property the reader skips) and one
+// triangle strip with a restart (-1) and a repeated last vertex, in binary of either byte order.
+void write_binary_strips(const std::string& file, bool big_endian)
+{
+  std::ofstream out(file, std::ios::binary);
+  out << "ply\nformat " << (big_endian ? "binary_big_endian" : "binary_little_endian")
+      << " 1.0\ncomment strips\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+         "property float confidence\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+  auto put = [&](std::uint32_t bits) {
+    for(int k = 0; k < 4; ++k) {
+      const int shift = big_endian ? 8 * (3 - k) : 8 * k;
+      out.put(char((bits >> shift) & 0xff));
+    }
+  };
+  auto put_float = [&](float f) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    put(bits);
+  };
+  for(int v = 0; v < 6; ++v) {
+    put_float(float(v / 2));
+    put_float(float(v % 2));
+    put_float(0.f);
+    put_float(0.5f);
+  }
+  const std::vector<std::int32_t> strip = {0, 1, 2, 3, -1, 2, 3, 4, 5, 5};
+  put(std::uint32_t(strip.size()));
+  for(std::int32_t i : strip)
+    put(std::uint32_t(i));
+}
+
+// Triangle strips (PLY element tristrips: Stanford's igea.ply is stored so), which CGAL's PLY
+// reader does not read: unrolled into triangles of one orientation, ASCII and binary of both
+// byte orders; a bad strip gets a message.
+void check_ply_triangle_strips()
+{
+  typedef std::vector<std::vector<std::size_t> > Polygons;
+  Polygons triangles;
+  std::string error;
+  const std::size_t restart = std::numeric_limits<std::uint32_t>::max(); // -1 read as unsigned
+  SMP_CHECK(smp_tools::internal::unroll_triangle_strips({{0, 1, 2, 3, restart, 3, 3, 4}, {1, 2}}, 5, triangles, error) &&
+              triangles == Polygons({{0, 1, 2}, {2, 1, 3}}),
+            "unrolled strips: " << triangles.size() << " triangles");
+  triangles.clear();
+  SMP_CHECK(!smp_tools::internal::unroll_triangle_strips({{0, 1, 5}}, 5, triangles, error) &&
+              error.find("out of range") != std::string::npos,
+            "a strip index out of range: '" << error << "'");
+
   std::ofstream("strips.ply") << "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
                                  "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
                                  "end_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n4 0 1 2 3\n";
-  check_error("triangle strips", "strips.ply --atlas", "tristrips");
+  Result r = run("strips.ply --atlas -q --no-pictures -o out_strips");
+  SMP_CHECK(r.status == 0, "ASCII strips: " << r.err);
+  SMP_CHECK(obj_faces("out_strips/strips.obj") == std::vector<std::string>({"f 1/1 2/2 3/3", "f 3/4 2/5 4/6"}),
+            "ASCII strips: " << obj_faces("out_strips/strips.obj").size() << " faces written");
+  const std::vector<std::string> grid = {"f 1/1 2/2 3/3", "f 3/4 2/5 4/6", "f 3/7 4/8 5/9", "f 5/10 4/11 6/12"};
+  for(bool big_endian : {false, true}) {
+    const std::string name = big_endian ? "strips_be" : "strips_le";
+    write_binary_strips(name + ".ply", big_endian);
+    r = run(name + ".ply --atlas -q --no-pictures -o out_" + name);
+    SMP_CHECK(r.status == 0, name << ": " << r.err);
+    SMP_CHECK(obj_faces("out_" + name + "/" + name + ".obj") == grid,
+              name << ": " << obj_faces("out_" + name + "/" + name + ".obj").size() << " faces written");
+  }
+  r = run("strips_le.ply -q --no-pictures -o out_strips_disk"); // a disk: parameterized as one
+  SMP_CHECK(r.status == 0, "strips of a disk, without --atlas: " << r.err);
+
+  std::ofstream("strips_bad_index.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                           "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
+                                           "end_header\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 7\n";
+  check_error("a strip index out of range", "strips_bad_index.ply --atlas", "out of range");
+  std::ofstream("strips_bytes.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                       "property float z\nelement tristrips 1\nproperty list uchar uchar vertex_indices\n"
+                                       "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  check_error("strips of 8-bit indices", "strips_bytes.ply --atlas", "triangle strips");
 }
 
 // An OBJ file whose long lines go on after a backslash (as Rhino writes them), with indices
@@ -316,10 +400,7 @@ void check_obj_continued_lines()
                                     "f 1 2 \\\n 5\nf -4 -3 \\\r\n -1\nf 3/1/1 4/2/2 5/3/3\nf -2 -5 -1\n";
   const Result r = run("continued.obj --atlas -q --no-pictures -o out_continued");
   SMP_CHECK(r.status == 0, "continued lines: " << r.err);
-  std::ifstream obj("out_continued/continued.obj");
-  std::vector<std::string> faces;
-  for(std::string line; std::getline(obj, line);)
-    if(line.rfind("f ", 0) == 0) faces.push_back(line);
+  const std::vector<std::string> faces = obj_faces("out_continued/continued.obj");
   const std::vector<std::string> expected = {"f 1/1 2/2 5/3", "f 2/4 3/5 5/6", "f 3/7 4/8 5/9", "f 4/10 1/11 5/12"};
   SMP_CHECK(faces == expected, "continued lines: " << faces.size() << " faces written");
 }
@@ -555,6 +636,7 @@ int main()
   check_outputs();
   check_errors();
   check_obj_continued_lines();
+  check_ply_triangle_strips();
   check_isolated_vertex();
   check_atlas();
   check_remesh();
