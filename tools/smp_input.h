@@ -6,7 +6,7 @@
 // smp_ply_strips.h),
 // shared with the fuzz harness so that it tests what users run. A file that cannot be read
 // gives a message, never an exception: an OFF or PLY file is checked first where CGAL 5.5.1's
-// readers would misbehave (see check_off() and check_ply()), and an exception from a reader
+// readers would misbehave (see check_off() and smp_ply_check.h), and an exception from a reader
 // (out of memory included) becomes a message.
 
 #ifndef SMP_TOOLS_SMP_INPUT_H
@@ -17,6 +17,7 @@
 #include <CGAL/Polygon_mesh_processing/repair.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "smp_ply_check.h"
 #include "smp_ply_strips.h"
 
 #include <algorithm>
@@ -240,42 +241,6 @@ bool read_plain_off(const std::string& file, std::vector<Point>& points, std::ve
     polygons.push_back(std::move(polygon));
   }
   return !next_line();
-}
-
-// A PLY header: counts that the file can hold (CGAL reserves them, and skips the items of an
-// element it does not read one by one), and no property before the first element (CGAL 5.5.1
-// adds it to the last element, of which there is none). Read as CGAL reads it: the signature
-// and the format on the first two lines, whatever they hold, then one keyword a line up to
-// end_header.
-inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error)
-{
-  std::string line;
-  double announced = 0.;
-  bool element = false;
-  for(int number = 1; std::getline(in, line); ++number) {
-    std::istringstream fields(line);
-    std::string word, name;
-    std::size_t count = 0; // read as CGAL reads it: "-1" is the largest count
-    if(number <= 2 || !(fields >> word))
-      continue;
-    if(word == "end_header")
-      break;
-    if(word == "element") {
-      element = true;
-      if(fields >> name >> count)
-        announced += double(count);
-    } else if(word == "property" && !element) {
-      error = "a PLY property comes before any element";
-      return false;
-    }
-  }
-  if(announced > static_cast<double>(bytes)) {
-    std::ostringstream m;
-    m << "the header announces " << announced << " elements in " << bytes << " bytes";
-    error = m.str();
-    return false;
-  }
-  return true;
 }
 
 // False, with a message, if an OFF or PLY file would make CGAL's reader misbehave (see

@@ -280,6 +280,21 @@ void check_errors()
   std::ofstream("negative_element.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                                            "property float y\nproperty float z\nelement junk -1.5\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
   check_error("PLY element of a negative count", "negative_element.ply --atlas", "announces");
+  // a list whose count the file cannot hold: CGAL 5.5.1 resizes the list to it first (2^31
+  // items of a 100-byte file took 8 GB and minutes)
+  {
+    std::ofstream big("list_count.ply", std::ios::binary);
+    big << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
+    const std::string zero(4, '\0'), one("\x00\x00\x80\x3f", 4); // 0.f and 1.f, little endian
+    big << zero << zero << zero << one << zero << zero << zero << one << zero;
+    big << std::string("\xff\xff\xff\x7f", 4) << zero << std::string("\x01\0\0\0", 4) << std::string("\x02\0\0\0", 4);
+  }
+  check_error("binary PLY list of a count beyond the file", "list_count.ply --atlas", "list announces");
+  std::ofstream("list_count_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                           "property float z\nelement face 1\nproperty list int int vertex_indices\n"
+                                           "end_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n";
+  check_error("ASCII PLY list of a negative count", "list_count_ascii.ply --atlas", "list announces");
   // found by the fuzz harness: CGAL 5.5.1's PLY reader adds a property to an element that is not there
   std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
                                          "property float y\nend_header\n0 0\n";
