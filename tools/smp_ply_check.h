@@ -8,7 +8,7 @@
 // would misbehave: counts in the header that the file cannot hold (it reserves them, and skips
 // the items of an element it does not read one by one), a property before any element, and
 // lists whose count the rest of the file cannot hold (it resizes a list to its count before
-// reading its items: a count of 2^31 in a file of a hundred bytes took 8 GB and minutes).
+// reading its items, so that a file of a few bytes can make it fill gigabytes).
 
 #include <cstdint>
 #include <cstdlib>

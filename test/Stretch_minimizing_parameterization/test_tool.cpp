@@ -280,8 +280,7 @@ void check_errors()
   std::ofstream("negative_element.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
                                            "property float y\nproperty float z\nelement junk -1.5\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
   check_error("PLY element of a negative count", "negative_element.ply --atlas", "announces");
-  // a list whose count the file cannot hold: CGAL 5.5.1 resizes the list to it first (2^31
-  // items of a 100-byte file took 8 GB and minutes)
+  // a list whose count the file cannot hold: CGAL 5.5.1 resizes the list to it before reading it
   {
     std::ofstream big("list_count.ply", std::ios::binary);
     big << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
