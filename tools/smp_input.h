@@ -244,7 +244,7 @@ bool read_plain_off(const std::string& file, std::vector<Point>& points, std::ve
 }
 
 // False, with a message, if an OFF or PLY file would make CGAL's reader misbehave (see
-// check_off() and check_ply()); other files pass.
+// check_off() and smp_ply_check.h); other files pass.
 inline bool check_before_reading(const std::string& file, std::string& error)
 {
   const std::string e = lower_extension(file);
@@ -306,8 +306,9 @@ inline bool join_continued_obj_lines(const std::string& file, std::string& joine
 }
 
 // The polygons of `file`: a plain OFF file read by read_plain_off(), any other by CGAL's reader
-// once check_before_reading() lets it (an OBJ file with continued lines, joined first); an
-// exception becomes false and a message.
+// once check_before_reading() lets it (an OBJ file with continued lines, joined first; a PLY
+// file of triangle strips, in which CGAL finds no polygon, by smp_ply_strips.h); an exception
+// becomes false and a message.
 template <typename Point>
 bool read_polygons(const std::string& file, std::vector<Point>& points,
                    std::vector<std::vector<std::size_t> >& polygons, std::string& error)
@@ -324,24 +325,15 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
       std::istringstream in(joined);
       return CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
     }
-    return CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
+    const bool read = CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
+    if(read && polygons.empty() && lower_extension(file) == ".ply" && ply_has_triangle_strips(file))
+      return read_ply_triangle_strips(file, points, polygons, error);
+    return read;
   } catch(const std::bad_alloc&) {
     error = "out of memory while reading " + file;
   } catch(const std::exception& e) {
     error = "cannot read " + file + ": " + e.what();
   }
-  return false;
-}
-
-// Whether the PLY header of `file` declares triangle strips (`element tristrips`, as some
-// scanned meshes are stored), which CGAL's PLY reader does not read (smp_ply_strips.h does).
-inline bool ply_has_triangle_strips(const std::string& file)
-{
-  std::ifstream in(file, std::ios::binary);
-  std::string line;
-  for(int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines)
-    if(line.rfind("element tristrips", 0) == 0)
-      return true;
   return false;
 }
 
@@ -352,21 +344,7 @@ template <typename Point>
 bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
                std::string& error)
 {
-  bool ok = internal::read_polygons(file, points, polygons, error);
-  if(ok && polygons.empty() && error.empty() && internal::lower_extension(file) == ".ply" &&
-     internal::ply_has_triangle_strips(file)) {
-    try {
-      ok = internal::read_ply_triangle_strips(file, points, polygons, error);
-    } catch(const std::bad_alloc&) {
-      ok = false;
-      error = "out of memory while reading " + file;
-    } catch(const std::exception& e) {
-      ok = false;
-      error = "cannot read " + file + ": " + e.what();
-    }
-    if(!ok)
-      return false;
-  }
+  const bool ok = internal::read_polygons(file, points, polygons, error);
   if(ok && !polygons.empty())
     return true;
   if(error.empty())

@@ -56,6 +56,17 @@ inline bool unroll_triangle_strips(const std::vector<std::vector<std::size_t> >&
   return true;
 }
 
+// Whether the PLY header of `file` declares triangle strips (`element tristrips`).
+inline bool ply_has_triangle_strips(const std::string& file)
+{
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  for(int lines = 0; lines < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++lines)
+    if(line.rfind("element tristrips", 0) == 0)
+      return true;
+  return false;
+}
+
 // Reads `file`, a PLY file whose header declares `element tristrips`, into `points` and the
 // triangles of its strips. False, with a message, if it cannot be read so.
 template <typename Point>
