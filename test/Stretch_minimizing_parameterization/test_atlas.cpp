@@ -811,6 +811,97 @@ void chart_starts()
   SMP_CHECK(tube.ok && tube.l2 < 1.5, "tube: ok " << tube.ok << ", L2 " << tube.l2);
 }
 
+// A band of `columns` x `rows` cells between the radii 1 and 1 + `width` of the plane, around
+// `angle`, the flattened fillet of a curved edge; with `ear`, one more triangle sticks out of
+// its outer side (its tip in no other triangle).
+SMP::internal::Chart_map arc_chart(int columns, int rows, double width, double angle, bool ear)
+{
+  SMP::internal::Chart_map chart;
+  for(int j = 0; j <= rows; ++j)
+    for(int i = 0; i <= columns; ++i) {
+      const double a = angle * i / columns, r = 1. + width * j / rows;
+      chart.flat.xyz.push_back({r * std::cos(a), r * std::sin(a), 0.});
+    }
+  for(int j = 0; j < rows; ++j)
+    for(int i = 0; i < columns; ++i) {
+      const int a = j * (columns + 1) + i, b = a + 1, c = a + columns + 1, d = c + 1;
+      chart.flat.tri.push_back({a, b, d});
+      chart.flat.tri.push_back({a, d, c});
+    }
+  if(ear) { // on the outer side's cell in the middle, the tip half a cell out
+    const int a = rows * (columns + 1) + columns / 2, b = a + 1;
+    const double m = angle * (columns / 2 + 0.5) / columns, r = 1. + 1.5 * width;
+    chart.flat.xyz.push_back({r * std::cos(m), r * std::sin(m), 0.});
+    chart.flat.tri.push_back({a, b, int(chart.flat.xyz.size()) - 1});
+  }
+  for(std::size_t t = 0; t < chart.flat.tri.size(); ++t)
+    chart.triangles.push_back(t);
+  return chart;
+}
+
+// The share of its smallest bounding rectangle that a chart's uv fills.
+double rectangle_fill(const SMP::internal::Chart_map& chart)
+{
+  std::vector<SMP::internal::Vec2> uv = chart.uv;
+  const SMP::internal::Vec2 extent = SMP::internal::align_chart(uv);
+  double area = 0.;
+  for(const SMP::internal::Triangle& t : chart.flat.tri)
+    area += 0.5 * SMP::internal::twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]);
+  return area / (extent[0] * extent[1]);
+}
+
+// A bent strip is laid out straight, flip-free and within a hundredth of its stretch (a band of
+// width 0.04 around a circle of radius 1 changes lengths by 2% at most); a straight strip and a
+// square are left as they are. The polish of the straight layout keeps its pinned corners.
+void bent_strips()
+{
+  SMP::internal::Chart_parameterization_settings settings;
+  settings.max_stretch = 1.05;
+  for(const bool ear : {false, true})
+    for(const double angle : {0.5 * 3.14159265358979323846, 1.5 * 3.14159265358979323846}) {
+      SMP::internal::Chart_map arc = arc_chart(80, 2, 0.04, angle, ear);
+      SMP::internal::flatten_chart(arc, settings);
+      const double fill = arc.ok ? rectangle_fill(arc) : 0., l2 = arc.l2;
+      SMP_CHECK(arc.ok && fill < 0.6, "arc of " << angle << " (ear " << ear << "): ok " << arc.ok << ", fill " << fill);
+      if(!arc.ok) continue;
+      const bool straightened = SMP::internal::straighten_strip(arc, settings.max_stretch);
+      const SMP::internal::Flat_stretch_summary s = SMP::internal::Flat_stretch().evaluate(arc.flat, arc.uv);
+      std::vector<SMP::internal::Vec2> uv = arc.uv;
+      const SMP::internal::Vec2 extent = SMP::internal::align_chart(uv); // the ear's tip is half a width out
+      SMP_CHECK(straightened && extent[0] > 0.95 * angle && extent[1] < (ear ? 1.6 : 1.1) * 0.04 && s.flipped == 0 &&
+                  s.degenerate_uv == 0 && s.l2 <= l2 + 0.01 && arc.l2 == s.l2,
+                "arc of " << angle << " (ear " << ear << "): straightened " << straightened << ", extent " << extent[0]
+                          << " x " << extent[1] << ", flipped " << s.flipped << ", L2 " << l2 << " -> " << s.l2);
+    }
+  for(const double turn : {0.02, 0.}) { // a straight strip (on a cylinder), a square
+    SMP::internal::Chart_map chart = turn > 0. ? cylinder_chart(60, 2, turn) : cylinder_chart(10, 10, 0.016);
+    SMP::internal::flatten_chart(chart, settings);
+    const std::vector<SMP::internal::Vec2> before = chart.uv;
+    SMP_CHECK(chart.ok && !SMP::internal::straighten_strip(chart, settings.max_stretch) && chart.uv == before,
+              "not a bent strip (" << turn << "): ok " << chart.ok << ", fill " << (chart.ok ? rectangle_fill(chart) : 0.));
+  }
+  // free-border steps from a squeezed arc, two border vertices pinned
+  SMP::internal::Chart_map arc = arc_chart(40, 2, 0.04, 1., false);
+  std::vector<SMP::internal::Vec2> uv;
+  for(const SMP::internal::Vec3& p : arc.flat.xyz)
+    uv.push_back({1.3 * p[0], p[1]});
+  std::vector<char> pinned(uv.size(), 0);
+  pinned[0] = pinned[40] = 1;
+  const std::vector<SMP::internal::Vec2> start = uv;
+  std::vector<int> border = SMP::internal::border_loop(arc.flat.tri, uv.size());
+  std::reverse(border.begin(), border.end());
+  SMP::internal::Sander_polish_settings ps;
+  ps.free_border = true;
+  ps.pin_fixed_border = true;
+  ps.max_iterations = 5;
+  const SMP::internal::Sander_polish_result r =
+      SMP::internal::Sander_energy_polisher<>().polish(arc.flat, {}, pinned, border, uv, ps);
+  SMP_CHECK(r.status == SMP::internal::Sander_polish_status::OK && uv[0] == start[0] && uv[40] == start[40] &&
+              uv[1] != start[1],
+            "pinned border vertices: status " << int(r.status) << ", moved " << (uv[0] != start[0]) << " "
+                                              << (uv[40] != start[40]) << ", the others " << (uv[1] != start[1]));
+}
+
 // An n x n grid of jittered squares, each cut in two, squeezed on one side (triangles of uneven
 // sizes), on a plane and on a saddle.
 void jittered_grids(int n, std::mt19937& random, SMP::internal::Flat_triangles& plane, SMP::internal::Flat_triangles& saddle)
@@ -1851,6 +1942,7 @@ int run_test(int argc, char** argv)
   chart_mask_outline();
   vertex_sort();
   chart_starts();
+  bent_strips();
   deferred_polish();
   polish_left_out_when_it_gains_too_little();
   conformal_map_minimum();

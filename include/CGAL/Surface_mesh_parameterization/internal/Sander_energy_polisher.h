@@ -71,6 +71,7 @@ struct Sander_polish_settings
   unsigned int max_iterations = 200;
   double time_budget = 0.;    // seconds, checked before each step; <= 0: none
   bool free_border = false;   // let the outer border move (the vertices of `border`)
+  bool pin_fixed_border = false; // with a free border, its vertices that are `fixed` stay (else all move)
   double tolerance = 1e-6;    // converged when a step lowers the energy by less than this, relatively
   // converged when the last `tolerance_window` steps together lower the energy by less than
   // that many times the tolerance (fewer steps at the start): a step cut short by a fold may
@@ -180,7 +181,7 @@ public:
     };
 
     std::string why;
-    if(!setup(m, guard, fixed, border, uv, settings.free_border, why))
+    if(!setup(m, guard, fixed, border, uv, settings.free_border, settings.pin_fixed_border, why))
       return fail(Sander_polish_status::BAD_START, why);
     m_threads = (std::max)(settings.threads, 1u);
     m_solver.set_supernodal_rows(Eigen::Index(settings.newton_supernodal_rows), settings.supernodal_blas);
@@ -323,7 +324,7 @@ public:
                const std::vector<int>& border, const std::vector<Vec2>& uv, bool free_border)
   {
     std::string why;
-    return setup(m, guard, fixed, border, uv, free_border, why);
+    return setup(m, guard, fixed, border, uv, free_border, false, why);
   }
 
 private:
@@ -361,7 +362,8 @@ private:
 
   // Checks the start, classifies the faces, numbers the unknowns and builds the sparse pattern.
   bool setup(const Flat_triangles& m, const std::vector<Triangle>& guard, const std::vector<char>& fixed,
-             const std::vector<int>& border, const std::vector<Vec2>& uv, bool free_border, std::string& why)
+             const std::vector<int>& border, const std::vector<Vec2>& uv, bool free_border, bool pin,
+             std::string& why)
   {
     const std::size_t nv = m.xyz.size();
     auto valid = [nv](const Triangle& t) {
@@ -398,8 +400,9 @@ private:
 
     // A free border frees the outer loop, except the corners of faces of fixed vertices and
     // zero uv area (an ear flattened on a side of the square): such a face cannot carry energy.
+    // Pinned, its fixed vertices stay.
     m_fixed.assign(fixed.begin(), fixed.end());
-    if(free_border) {
+    if(free_border && !pin) {
       std::vector<char> keep_fixed(nv, 0);
       for(const Triangle& t : m.tri)
         if(fixed[t[0]] && fixed[t[1]] && fixed[t[2]] && twice_signed_area(uv[t[0]], uv[t[1]], uv[t[2]]) == 0.)

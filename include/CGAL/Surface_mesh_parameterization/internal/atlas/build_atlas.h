@@ -5,9 +5,9 @@
 #define CGAL_SMP_INTERNAL_ATLAS_BUILD_ATLAS_H
 
 // The atlas of a triangulated soup: charts grown, flattened and cut while above the stretch
-// bound (in two, or in several parts at once when far above it), packed (the longest cut
-// across while the square is poorly filled), then written per polygon corner with the report's
-// measures. make_atlas() reads the input and calls it.
+// bound (in two, or in several parts at once when far above it), bent strips laid out
+// straight, packed (the longest cut across while the square is poorly filled), then written
+// per polygon corner with the report's measures. make_atlas() reads the input and calls it.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -18,6 +18,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_partition.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Strip_straightening.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/wall_clock.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
@@ -408,6 +409,17 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       areas[c] = charts[c].triangles.empty() || !charts[c].ok ? Chart_areas() : chart_areas(charts[c]);
     r.seconds_parameterization += seconds_since(t1);
   }
+  // the bent strips among the charts from `begin` on laid out straight (Strip_straightening.h)
+  auto straighten = [&](std::size_t begin) {
+    const auto t1 = std::chrono::steady_clock::now();
+    parallel_for_each(charts.size() - begin, threads, [&](std::size_t i) {
+      Chart_map& chart = charts[begin + i];
+      if(!chart.triangles.empty() && straighten_strip(chart, settings.max_stretch))
+        areas[begin + i] = chart_areas(chart);
+    });
+    r.seconds_parameterization += seconds_since(t1);
+  };
+  straighten(0);
 
   // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
   // longest chart (the one that leaves the most room unused around it) is cut across. A cut
@@ -509,6 +521,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         continue;
       }
       settle(before, false, settings.chart, halves_taken_back[c]); // told as packing rounds
+      straighten(before);
       gather();
       const double after = estimated_utilization();
       // better by more than the rounding of the charts' areas: those add up to the surface's
@@ -579,6 +592,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         cut_if_needed(kept[i]);
       }
     settle(before, false, settings.chart);
+    straighten(before);
     gather();
     packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
     measured = measure_packed_charts(charts, kept, uv, flipped);

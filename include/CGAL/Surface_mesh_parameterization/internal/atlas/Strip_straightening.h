@@ -1,0 +1,312 @@
+// Copyright (c) 2026 The Stretch_minimizing_parameterization authors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_SMP_INTERNAL_ATLAS_STRIP_STRAIGHTENING_H
+#define CGAL_SMP_INTERNAL_ATLAS_STRIP_STRAIGHTENING_H
+
+// A chart that is a long, thin strip flattens bent where its surface is (the rounded fillet
+// along a curved edge of a CAD model flattens to an arc, a band around a rim to an L or a U):
+// it then takes a small share of its bounding rectangle, and the packing fills the hollow of an
+// arc with little but thinner arcs. A strip of width w bent with radius R laid out straight has
+// its lengths changed by about w / (2 R) only, so such a chart is laid out straight (see
+// straighten_strip()), and keeps that layout where its stretch stays low.
+
+#include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
+
+#include <CGAL/Surface_mesh_parameterization/internal/Sander_energy_polisher.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
+#include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Surface_mesh_parameterization {
+namespace internal {
+CGAL_SMP_BEGIN_SOLVER_NAMESPACE
+
+// The border of a chart of triangles `tri` as one loop of chart vertices, the chart on its left
+// (the triangles' way round); empty if the border is not one simple loop.
+inline std::vector<int> border_loop(const std::vector<Triangle>& tri, std::size_t vertices)
+{
+  const std::vector<std::array<int, 2> > outline = chart_outline(tri);
+  std::vector<int> next(vertices, -1);
+  for(const std::array<int, 2>& side : outline) {
+    if(next[std::size_t(side[0])] >= 0) return {}; // the border passes twice through a vertex
+    next[std::size_t(side[0])] = side[1];
+  }
+  std::vector<int> loop;
+  if(outline.empty()) return loop;
+  for(int v = outline.front()[0]; loop.size() <= outline.size(); v = next[std::size_t(v)]) {
+    if(v < 0) return {};
+    if(!loop.empty() && v == loop.front()) break;
+    loop.push_back(v);
+  }
+  if(loop.size() != outline.size()) return {};
+  return loop;
+}
+
+// The two ends of a strip whose border is `loop` at `uv`: the pairs of loop positions (first,
+// last corner; one corner for a pointed end) of two stretches of border, each at most `reach`
+// long and turning by at least 0.6 pi, trimmed to their first and last vertex that turns by a
+// tenth of their total: the one that turns most, then, of those that leave two sides of lengths
+// within a ratio `balance` between the two ends, the one that turns most; false if there are none.
+inline bool strip_ends(const std::vector<int>& loop, const std::vector<Vec2>& uv, double reach, double balance,
+                       std::array<std::pair<std::size_t, std::size_t>, 2>& ends)
+{
+  const std::size_t n = loop.size();
+  if(n < 4) return false;
+  std::vector<double> turn(n), length(n); // at each corner; of the side from it to the next
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vec2& a = uv[std::size_t(loop[(i + n - 1) % n])];
+    const Vec2& b = uv[std::size_t(loop[i])];
+    const Vec2& c = uv[std::size_t(loop[(i + 1) % n])];
+    const Vec2 in{b[0] - a[0], b[1] - a[1]}, out{c[0] - b[0], c[1] - b[1]};
+    turn[i] = std::atan2(in[0] * out[1] - in[1] * out[0], in[0] * out[0] + in[1] * out[1]);
+    length[i] = std::hypot(out[0], out[1]);
+  }
+  // the stretch from corner i on that turns most within `reach`, and its turn
+  const auto window = [&](std::size_t i, std::size_t& last) {
+    double best = turn[i], sum = turn[i], along = 0.;
+    last = i;
+    for(std::size_t k = 1; k < n; ++k) {
+      along += length[(i + k - 1) % n];
+      if(along > reach) break;
+      sum += turn[(i + k) % n];
+      if(sum > best) { best = sum; last = (i + k) % n; }
+    }
+    return best;
+  };
+  const auto trimmed = [&](std::size_t first, std::size_t last, double total) {
+    while(first != last && turn[first] < 0.1 * total) first = (first + 1) % n;
+    while(last != first && turn[last] < 0.1 * total) last = (last + n - 1) % n;
+    return std::make_pair(first, last);
+  };
+  const double least = 0.6 * 3.14159265358979323846;
+  const auto span = [n](std::size_t first, std::size_t last) { return (last + n - first) % n; };
+  std::size_t first_end = n, last = 0;
+  double best = least;
+  for(std::size_t i = 0; i < n; ++i) {
+    std::size_t l;
+    const double t = window(i, l);
+    if(t >= best) { best = t; first_end = i; last = l; }
+  }
+  if(first_end == n) return false;
+  ends[0] = trimmed(first_end, last, best);
+  // the other end: a stretch after the first one that leaves two sides of about one length
+  // between them (within `balance`), the one that turns most
+  const std::size_t taken = span(ends[0].first, ends[0].second);
+  std::vector<double> along(n + 1, 0.); // border length from the first end's last corner
+  for(std::size_t k = 0; k < n; ++k)
+    along[k + 1] = along[k] + length[(ends[0].second + k) % n];
+  double second = least;
+  bool found = false;
+  for(std::size_t i = 0; i < n; ++i) {
+    if(span(ends[0].first, i) <= taken + 1 || span(ends[0].first, i) + 1 >= n) continue;
+    std::size_t l;
+    const double t = window(i, l);
+    if(t < second || span(ends[0].first, l) < span(ends[0].first, i) || span(ends[0].first, l) + 1 >= n) continue;
+    const std::pair<std::size_t, std::size_t> end = trimmed(i, l, t);
+    const double one = along[span(ends[0].second, end.first)];
+    const double other_side = along[span(ends[0].second, ends[0].first)] - along[span(ends[0].second, end.second)];
+    if(!((std::max)(one, other_side) <= balance * (std::min)(one, other_side))) continue;
+    second = t;
+    ends[1] = end;
+    found = true;
+  }
+  return found;
+}
+
+// A polyline by the share of its length up to each point (0 at the first, 1 at the last),
+// extended along its first and last segments beyond them.
+class Polyline_by_length
+{
+public:
+  explicit Polyline_by_length(const std::vector<Vec2>& points)
+  {
+    for(const Vec2& q : points)
+      if(m_points.empty() || std::hypot(q[0] - m_points.back()[0], q[1] - m_points.back()[1]) > 0.) {
+        m_at.push_back(m_points.empty() ? 0. : m_at.back() + std::hypot(q[0] - m_points.back()[0], q[1] - m_points.back()[1]));
+        m_points.push_back(q);
+      }
+    m_length = m_at.empty() ? 0. : m_at.back();
+    for(double& a : m_at) a = m_length > 0. ? a / m_length : 0.;
+  }
+  bool valid() const { return m_points.size() >= 2; }
+  double length() const { return m_length; }
+  const std::vector<double>& shares() const { return m_at; }
+  Vec2 at(double t) const
+  {
+    const std::size_t k = std::size_t(std::upper_bound(m_at.begin() + 1, m_at.end() - 1, t) - m_at.begin()) - 1;
+    const double f = (t - m_at[k]) / (m_at[k + 1] - m_at[k]);
+    return {m_points[k][0] + f * (m_points[k + 1][0] - m_points[k][0]), m_points[k][1] + f * (m_points[k + 1][1] - m_points[k][1])};
+  }
+
+private:
+  std::vector<Vec2> m_points;
+  std::vector<double> m_at;
+  double m_length = 0.;
+};
+
+// Lays `chart` (flattened, with no slit and no polish pending) out straight if it is a bent
+// strip: it fills less than 60% of its smallest bounding rectangle, and its border is two ends
+// (strip_ends(), looked for in stretches three times its mean width long) and two sides at
+// least four times as long as the ends and of lengths within 30% of each other. The sides, each
+// from the first end to the second, give the segments from the point at a share t of the length
+// of one to the point at that share of the other (for a strip bent on a circle, its radii); a
+// chart vertex on the segment of t, at a share d of it from the first side, goes to
+// (t L, (d - 1/2) w(t)), L the sides' mean length and w(t) the segment's length. The sides are
+// taken without their vertices of one triangle (the tip of a triangle that sticks out of the
+// border), which would come out on one line with their neighbours. Where the strip turns
+// sharply, its sides have lengths that no segments pair well, and the layout shears the strip:
+// free-border Newton steps on Sander's stretch, the four corners pinned, take the shear to
+// where the strip turns (they keep every triangle's orientation and the border simple, and
+// refuse a start that is not). The layout is kept if its L2 stretch is within `max_stretch` and
+// within a hundredth of the chart's; then true.
+inline bool straighten_strip(Chart_map& chart, double max_stretch)
+{
+  if(!chart.ok || !chart.slits.empty() || chart.deferred.pending || chart.flat.tri.size() < 2)
+    return false;
+  const std::vector<Triangle>& tri = chart.flat.tri;
+  const std::vector<Vec2>& uv = chart.uv;
+  double area = 0.;
+  for(const Triangle& t : tri)
+    area += 0.5 * twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]);
+  std::vector<Vec2> aligned = uv;
+  const Vec2 extent = align_chart(aligned);
+  if(!(area > 0.) || !(area < 0.6 * extent[0] * extent[1]))
+    return false;
+  const std::vector<int> loop = border_loop(tri, uv.size());
+  const std::size_t n = loop.size();
+  if(n < 4)
+    return false;
+  double perimeter = 0.;
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vec2 &a = uv[std::size_t(loop[i])], &b = uv[std::size_t(loop[(i + 1) % n])];
+    perimeter += std::hypot(b[0] - a[0], b[1] - a[1]);
+  }
+  // a strip's mean width is about its area over half its perimeter
+  const double balance = 1.3;
+  std::array<std::pair<std::size_t, std::size_t>, 2> ends;
+  if(!strip_ends(loop, uv, 6. * area / perimeter, balance, ends))
+    return false;
+  std::vector<int> triangles_at(uv.size(), 0);
+  for(const Triangle& t : tri)
+    for(int v : t) ++triangles_at[std::size_t(v)];
+  // a side from the corner `from` to the corner `to` along the loop (backwards if `back`)
+  const auto side = [&](std::size_t from, std::size_t to, bool back) {
+    std::vector<Vec2> points;
+    for(std::size_t i = from;; i = back ? (i + n - 1) % n : (i + 1) % n) {
+      if(i == from || i == to || triangles_at[std::size_t(loop[i])] > 1)
+        points.push_back(uv[std::size_t(loop[i])]);
+      if(i == to) break;
+    }
+    return Polyline_by_length(points);
+  };
+  const Polyline_by_length first = side(ends[0].second, ends[1].first, false);
+  const Polyline_by_length second = side(ends[0].first, ends[1].second, true);
+  if(!first.valid() || !second.valid())
+    return false;
+  const double shorter = (std::min)(first.length(), second.length());
+  const double longer = (std::max)(first.length(), second.length());
+  double end_length = 0.;
+  for(const auto& e : ends) {
+    const Vec2 &a = uv[std::size_t(loop[e.first])], &b = uv[std::size_t(loop[e.second])];
+    end_length = (std::max)(end_length, std::hypot(b[0] - a[0], b[1] - a[1]));
+  }
+  if(!(shorter >= 4. * end_length) || !(longer <= balance * shorter))
+    return false;
+  const double length = 0.5 * (first.length() + second.length());
+  // The segment of a vertex: where the segment's side of it changes from ahead of it to behind
+  // it, between two breaks of the sides; segments are looked for a little beyond the ends, where
+  // the vertices of a ragged end are. A segment carried on as a line may pass the vertex
+  // elsewhere too, where the strip turns back: the vertex is taken on the segment that holds it,
+  // or on the nearest one.
+  const auto ahead = [&](const Vec2& p, double t) {
+    const Vec2 a = first.at(t), b = second.at(t);
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+  };
+  const double reach = (std::max)(0.01, end_length / shorter);
+  std::vector<double> breaks = first.shares();
+  breaks.insert(breaks.end(), second.shares().begin(), second.shares().end());
+  breaks.push_back(-reach);
+  breaks.push_back(1. + reach);
+  std::sort(breaks.begin(), breaks.end());
+  breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
+  if(double(breaks.size()) * double(uv.size()) > 5e7) // the time would go as the square of the strip
+    return false;
+  std::vector<Vec2> straight(uv.size());
+  // the corners, on the segments of shares 0 and 1 (one corner: a pointed end)
+  std::vector<char> corner(uv.size(), 0);
+  for(int e = 0; e < 2; ++e) {
+    const Vec2 a = first.at(double(e)), b = second.at(double(e));
+    const double w = std::hypot(b[0] - a[0], b[1] - a[1]);
+    straight[std::size_t(loop[e == 0 ? ends[0].second : ends[1].first])] = {double(e) * length, -0.5 * w};
+    straight[std::size_t(loop[e == 0 ? ends[0].first : ends[1].second])] = {double(e) * length, 0.5 * w};
+    for(std::size_t c : {ends[std::size_t(e)].first, ends[std::size_t(e)].second}) corner[std::size_t(loop[c])] = 1;
+  }
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    if(corner[v]) continue;
+    const Vec2& p = uv[v];
+    double best = HUGE_VAL; // how far the share d is from [0, 1]
+    double g_low = ahead(p, breaks.front());
+    for(std::size_t k = 0; k + 1 < breaks.size(); ++k) {
+      const double g_high = ahead(p, breaks[k + 1]);
+      const bool crossed = g_low <= 0. && g_high > 0.;
+      g_low = g_high;
+      if(!crossed) continue;
+      double low = breaks[k], high = breaks[k + 1];
+      for(int i = 0; i < 50; ++i) {
+        const double middle = 0.5 * (low + high);
+        (ahead(p, middle) > 0. ? high : low) = middle;
+      }
+      const double t = 0.5 * (low + high);
+      const Vec2 a = first.at(t), b = second.at(t), ab{b[0] - a[0], b[1] - a[1]};
+      const double w2 = ab[0] * ab[0] + ab[1] * ab[1];
+      if(!(w2 > 0.)) continue;
+      const double d = ((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1]) / w2;
+      const double off = d < 0. ? -d : (d > 1. ? d - 1. : 0.);
+      if(off < best) {
+        best = off;
+        straight[v] = {t * length, (d - 0.5) * std::sqrt(w2)};
+      }
+    }
+    if(!(best < 1.5)) // a vertex off its segment by more than the strip is wide: no strip
+      return false;
+  }
+  std::vector<char> pinned(uv.size(), 0);
+  for(const auto& e : ends)
+    pinned[std::size_t(loop[e.first])] = pinned[std::size_t(loop[e.second])] = 1;
+  Sander_polish_settings ps;
+  ps.direction = Sander_polish_direction::SPLIT_NEWTON;
+  ps.free_border = true;
+  ps.pin_fixed_border = true;
+  ps.supernodal_blas = false; // charts are straightened on several threads at once
+  ps.max_iterations = 10;
+  const std::vector<int> border(loop.rbegin(), loop.rend()); // the polisher's way round
+  if(Sander_energy_polisher<>().polish(chart.flat, std::vector<Triangle>(), pinned, border, straight, ps).status !=
+     Sander_polish_status::OK)
+    return false;
+  const Flat_stretch_summary s = Flat_stretch().evaluate(chart.flat, straight);
+  if(s.flipped > 0 || s.degenerate_uv > 0 || !(s.l2 <= max_stretch) || !(s.l2 <= chart.l2 + 0.01))
+    return false;
+  double turned = 0.; // the chart's orientation, counterclockwise, kept
+  for(const Triangle& t : tri)
+    turned += twice_signed_area(straight[std::size_t(t[0])], straight[std::size_t(t[1])], straight[std::size_t(t[2])]);
+  if(!(turned > 0.))
+    return false;
+  chart.uv.swap(straight);
+  chart.l2 = s.l2;
+  return true;
+}
+
+CGAL_SMP_END_SOLVER_NAMESPACE
+} // namespace internal
+} // namespace Surface_mesh_parameterization
+} // namespace CGAL
+
+#endif // CGAL_SMP_INTERNAL_ATLAS_STRIP_STRAIGHTENING_H
