@@ -814,7 +814,7 @@ void chart_starts()
 // A band of `columns` x `rows` cells between the radii 1 and 1 + `width` of the plane, around
 // `angle`, the flattened fillet of a curved edge; with `ear`, one more triangle sticks out of
 // its outer side (its tip in no other triangle).
-SMP::internal::Chart_map arc_chart(int columns, int rows, double width, double angle, bool ear)
+SMP::internal::Chart_map arc_chart(int columns, int rows, double width, double angle, bool ear, bool pointed = false)
 {
   SMP::internal::Chart_map chart;
   for(int j = 0; j <= rows; ++j)
@@ -834,6 +834,12 @@ SMP::internal::Chart_map arc_chart(int columns, int rows, double width, double a
     chart.flat.xyz.push_back({r * std::cos(m), r * std::sin(m), 0.});
     chart.flat.tri.push_back({a, b, int(chart.flat.xyz.size()) - 1});
   }
+  if(pointed) { // a fan to a tip before the first end
+    const double a = -2. * angle / columns, r = 1. + 0.5 * width;
+    chart.flat.xyz.push_back({r * std::cos(a), r * std::sin(a), 0.});
+    for(int j = 0; j < rows; ++j)
+      chart.flat.tri.push_back({j * (columns + 1), (j + 1) * (columns + 1), int(chart.flat.xyz.size()) - 1});
+  }
   for(std::size_t t = 0; t < chart.flat.tri.size(); ++t)
     chart.triangles.push_back(t);
   return chart;
@@ -851,20 +857,27 @@ double rectangle_fill(const SMP::internal::Chart_map& chart)
 }
 
 // A bent strip is laid out straight, flip-free and within a hundredth of its stretch (a band of
-// width 0.04 around a circle of radius 1 changes lengths by 2% at most); a straight strip and a
-// square are left as they are. The polish of the straight layout keeps its pinned corners.
+// width 0.04 around a circle of radius 1 changes lengths by 2% at most), with an ear or a pointed
+// end too (one bent by three quarters of a turn is left as it is: the vertices beside its tip
+// are found on no segment, see straighten_strip()); a straight strip and a square are left. The polish of the straight layout keeps its pinned corners.
 void bent_strips()
 {
   SMP::internal::Chart_parameterization_settings settings;
   settings.max_stretch = 1.05;
-  for(const bool ear : {false, true})
+  for(const int kind : {0, 1, 2}) // plain, with an ear, with a pointed end
     for(const double angle : {0.5 * 3.14159265358979323846, 1.5 * 3.14159265358979323846}) {
-      SMP::internal::Chart_map arc = arc_chart(80, 2, 0.04, angle, ear);
+      const bool ear = kind == 1;
+      SMP::internal::Chart_map arc = arc_chart(80, 2, 0.04, angle, ear, kind == 2);
       SMP::internal::flatten_chart(arc, settings);
       const double fill = arc.ok ? rectangle_fill(arc) : 0., l2 = arc.l2;
       SMP_CHECK(arc.ok && fill < 0.6, "arc of " << angle << " (ear " << ear << "): ok " << arc.ok << ", fill " << fill);
       if(!arc.ok) continue;
+      const std::vector<SMP::internal::Vec2> bent = arc.uv;
       const bool straightened = SMP::internal::straighten_strip(arc, settings.max_stretch);
+      if(kind == 2 && angle > 3.) { // beside a pointed end far round, some vertices are on no segment
+        SMP_CHECK(!straightened && arc.uv == bent, "pointed arc of " << angle << ": straightened " << straightened);
+        continue;
+      }
       const SMP::internal::Flat_stretch_summary s = SMP::internal::Flat_stretch().evaluate(arc.flat, arc.uv);
       std::vector<SMP::internal::Vec2> uv = arc.uv;
       const SMP::internal::Vec2 extent = SMP::internal::align_chart(uv); // the ear's tip is half a width out

@@ -52,9 +52,10 @@ inline std::vector<int> border_loop(const std::vector<Triangle>& tri, std::size_
 
 // The two ends of a strip whose border is `loop` at `uv`: the pairs of loop positions (first,
 // last corner; one corner for a pointed end) of two stretches of border, each at most `reach`
-// long and turning by at least 0.6 pi, trimmed to their first and last vertex that turns by a
-// tenth of their total: the one that turns most, then, of those that leave two sides of lengths
-// within a ratio `balance` between the two ends, the one that turns most; false if there are none.
+// long, trimmed to their first and last vertex that turns by a tenth of their total: the one
+// that turns most, by at least 0.6 pi, then, of those that turn by at least 0.4 pi and leave two
+// sides of lengths within a ratio `balance` between the two ends, the one that turns most; false
+// if there are none.
 inline bool strip_ends(const std::vector<int>& loop, const std::vector<Vec2>& uv, double reach, double balance,
                        std::array<std::pair<std::size_t, std::size_t>, 2>& ends)
 {
@@ -103,7 +104,7 @@ inline bool strip_ends(const std::vector<int>& loop, const std::vector<Vec2>& uv
   std::vector<double> along(n + 1, 0.); // border length from the first end's last corner
   for(std::size_t k = 0; k < n; ++k)
     along[k + 1] = along[k] + length[(ends[0].second + k) % n];
-  double second = least;
+  double second = 2. / 3. * least; // the balance of the sides tells the other end as much as its turn
   bool found = false;
   for(std::size_t i = 0; i < n; ++i) {
     if(span(ends[0].first, i) <= taken + 1 || span(ends[0].first, i) + 1 >= n) continue;
@@ -112,7 +113,7 @@ inline bool strip_ends(const std::vector<int>& loop, const std::vector<Vec2>& uv
     if(t < second || span(ends[0].first, l) < span(ends[0].first, i) || span(ends[0].first, l) + 1 >= n) continue;
     const std::pair<std::size_t, std::size_t> end = trimmed(i, l, t);
     const double one = along[span(ends[0].second, end.first)];
-    const double other_side = along[span(ends[0].second, ends[0].first)] - along[span(ends[0].second, end.second)];
+    const double other_side = along[n - taken] - along[span(ends[0].second, end.second)]; // to the first end
     if(!((std::max)(one, other_side) <= balance * (std::min)(one, other_side))) continue;
     second = t;
     ends[1] = end;
@@ -166,7 +167,8 @@ private:
 // free-border Newton steps on Sander's stretch, the four corners pinned, take the shear to
 // where the strip turns (they keep every triangle's orientation and the border simple, and
 // refuse a start that is not). The layout is kept if its L2 stretch is within `max_stretch` and
-// within a hundredth of the chart's; then true.
+// within a hundredth of the chart's; then true. (A vertex beside a pointed end, where the
+// segments shrink to the tip, may be found on no segment: such a strip is left bent.)
 inline bool straighten_strip(Chart_map& chart, double max_stretch)
 {
   if(!chart.ok || !chart.slits.empty() || chart.deferred.pending || chart.flat.tri.size() < 2)
