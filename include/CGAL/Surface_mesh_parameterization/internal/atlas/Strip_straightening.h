@@ -283,12 +283,9 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
   std::vector<char> pinned(uv.size(), 0);
   for(const auto& e : ends)
     pinned[std::size_t(loop[e.first])] = pinned[std::size_t(loop[e.second])] = 1;
-  Sander_polish_settings ps;
-  ps.direction = Sander_polish_direction::SPLIT_NEWTON;
-  ps.free_border = true;
+  // the steps of a chart's free-border polish (one thread, 10 at most), the corners pinned
+  Sander_polish_settings ps = free_border_polish_settings(Chart_parameterization_settings());
   ps.pin_fixed_border = true;
-  ps.supernodal_blas = false; // charts are straightened on several threads at once
-  ps.max_iterations = 10;
   const std::vector<int> border(loop.rbegin(), loop.rend()); // the polisher's way round
   if(Sander_energy_polisher<>().polish(chart.flat, std::vector<Triangle>(), pinned, border, straight, ps).status !=
      Sander_polish_status::OK)
