@@ -21,9 +21,8 @@
 namespace smp_tools {
 namespace internal {
 
-// How one property of a PLY element is stored: a scalar of `bytes` bytes, or a list of items of
-// `bytes` bytes after a count of `count_bytes` bytes (signed or not). `bytes` is 0 for a type
-// this check does not know.
+// How one property of a PLY element that CGAL reads is stored: a scalar of `bytes` bytes, or a
+// list of items of `bytes` bytes after an integer count of `count_bytes` bytes (signed or not).
 struct Ply_property_layout
 {
   bool list = false;
@@ -38,26 +37,35 @@ struct Ply_element_layout
   std::vector<Ply_property_layout> properties;
 };
 
-// The bytes of a PLY scalar type (0 if unknown) and whether it is signed.
-inline int ply_type_bytes(const std::string& type, bool& is_signed)
+// How a PLY scalar type is stored: its bytes (0 if CGAL does not know it), whether it is signed
+// and whether it is an integer.
+struct Ply_type
 {
-  struct Type { const char* name; int bytes; bool is_signed; };
-  static const Type types[] = {{"char", 1, true},    {"int8", 1, true},     {"uchar", 1, false}, {"uint8", 1, false},
-                               {"short", 2, true},   {"int16", 2, true},    {"ushort", 2, false}, {"uint16", 2, false},
-                               {"int", 4, true},     {"int32", 4, true},    {"uint", 4, false},  {"uint32", 4, false},
-                               {"float", 4, true},   {"float32", 4, true},  {"double", 8, true}, {"float64", 8, true}};
-  for(const Type& t : types)
-    if(type == t.name) {
-      is_signed = t.is_signed;
-      return t.bytes;
-    }
-  return 0;
+  int bytes = 0;
+  bool is_signed = false;
+  bool integer = false;
+};
+
+inline Ply_type ply_type(const std::string& name)
+{
+  struct Named { const char* name; Ply_type type; };
+  static const Named types[] = {
+      {"char", {1, true, true}},     {"int8", {1, true, true}},     {"uchar", {1, false, true}},
+      {"uint8", {1, false, true}},   {"short", {2, true, true}},    {"int16", {2, true, true}},
+      {"ushort", {2, false, true}},  {"uint16", {2, false, true}},  {"int", {4, true, true}},
+      {"int32", {4, true, true}},    {"uint", {4, false, true}},    {"uint32", {4, false, true}},
+      {"float", {4, true, false}},   {"float32", {4, true, false}}, {"double", {8, true, false}},
+      {"float64", {8, true, false}}};
+  for(const Named& t : types)
+    if(name == t.name)
+      return t.type;
+  return Ply_type();
 }
 
 // The lists of the body of a PLY file (from `in`'s position; `left` bytes), as laid out by
 // `elements`: false, with a message, if a list announces more items than the rest of the file
-// can hold (or a negative number of them). Stops without complaint where the file ends early or
-// a type is unknown: the reader says what is wrong there.
+// can hold (or a negative number of them). Stops without complaint where the file ends early:
+// the reader says what is wrong there.
 inline bool check_ply_lists(std::istream& in, std::uintmax_t left, bool ascii, bool big_endian,
                             const std::vector<Ply_element_layout>& elements, std::string& error)
 {
@@ -89,7 +97,6 @@ inline bool check_ply_lists(std::istream& in, std::uintmax_t left, bool ascii, b
     bool scalars_only = true;
     std::uintmax_t item_bytes = 0;
     for(const Ply_property_layout& p : element.properties) {
-      if(p.bytes == 0 || (p.list && p.count_bytes == 0)) return true;
       scalars_only = scalars_only && !p.list;
       item_bytes += std::uintmax_t(p.bytes);
     }
@@ -164,18 +171,25 @@ inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error
       error = "a PLY property comes before any element";
       return false;
     } else if(word == "property") {
+      // CGAL reads only the properties of a known type (and lists of an integer count): the
+      // others take no byte of the body
       Ply_property_layout p;
-      std::string type, item_type;
-      if(fields >> type && type == "list" && fields >> type >> item_type) {
+      std::string type, name, item_type;
+      if(!(fields >> type >> name))
+        continue;
+      if(type == "list" && fields >> item_type) {
+        const Ply_type count = ply_type(name);
+        if(!count.integer)
+          continue;
         p.list = true;
-        p.count_bytes = ply_type_bytes(type, p.count_signed);
-        bool item_signed = false;
-        p.bytes = ply_type_bytes(item_type, item_signed);
-      } else {
-        bool is_signed = false;
-        p.bytes = ply_type_bytes(type, is_signed);
+        p.count_bytes = count.bytes;
+        p.count_signed = count.is_signed;
+        p.bytes = ply_type(item_type).bytes;
+      } else if(type != "list") {
+        p.bytes = ply_type(type).bytes;
       }
-      elements.back().properties.push_back(p);
+      if(p.bytes > 0)
+        elements.back().properties.push_back(p);
     }
   }
   if(announced > static_cast<double>(bytes)) {

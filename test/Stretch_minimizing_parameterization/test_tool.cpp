@@ -294,6 +294,17 @@ void check_errors()
                                            "property float z\nelement face 1\nproperty list int int vertex_indices\n"
                                            "end_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n";
   check_error("ASCII PLY list of a negative count", "list_count_ascii.ply --atlas", "list announces");
+  // found by the fuzz harness: a property of a type CGAL does not know takes no byte of the body
+  // (CGAL skips it), so the list after it starts earlier than its place in the header says
+  {
+    std::ofstream unknown("unknown_type.ply", std::ios::binary);
+    unknown << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float3 w\nproperty float x\n"
+               "property float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
+    const std::string zero(4, '\0'), one("\x00\x00\x80\x3f", 4); // 0.f and 1.f, little endian
+    unknown << zero << zero << zero << one << zero << zero << zero << one << zero;
+    unknown << std::string("\xff\xff\xff\x7f", 4) << zero << std::string("\x01\0\0\0", 4);
+  }
+  check_error("binary PLY list after a property of an unknown type", "unknown_type.ply --atlas", "list announces");
   // found by the fuzz harness: CGAL 5.5.1's PLY reader adds a property to an element that is not there
   std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
                                          "property float y\nend_header\n0 0\n";
