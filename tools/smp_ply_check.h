@@ -6,9 +6,10 @@
 
 // What the tools check in a PLY file before CGAL 5.5.1's reader reads it, where that reader
 // would misbehave: counts in the header that the file cannot hold (it reserves them, and skips
-// the items of an element it does not read one by one), a property before any element, and
-// lists whose count the rest of the file cannot hold (it resizes a list to its count before
-// reading its items, so that a file of a few bytes can make it fill gigabytes).
+// the items of an element it does not read one by one), a property before any element, a
+// header with no end (it then reads the body from the stream's end, counts of values it never
+// read), and lists whose count the rest of the file cannot hold (it resizes a list to its count
+// before reading its items, so that a file of a few bytes can make it fill gigabytes).
 
 #include <cstdint>
 #include <cstdlib>
@@ -198,8 +199,12 @@ inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error
     error = m.str();
     return false;
   }
+  if(!ended) { // CGAL's reader would read the body from a stream at its end: counts it never read
+    error = "the PLY header has no end_header line";
+    return false;
+  }
   const bool ascii = format == "ascii", big_endian = format == "binary_big_endian";
-  if(!ended || !(ascii || big_endian || format == "binary_little_endian"))
+  if(!(ascii || big_endian || format == "binary_little_endian"))
     return true;
   const std::streamoff header = in.tellg();
   if(header < 0 || std::uintmax_t(header) > bytes)

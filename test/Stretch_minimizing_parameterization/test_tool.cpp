@@ -305,6 +305,14 @@ void check_errors()
     unknown << std::string("\xff\xff\xff\x7f", 4) << zero << std::string("\x01\0\0\0", 4);
   }
   check_error("binary PLY list after a property of an unknown type", "unknown_type.ply --atlas", "list announces");
+  // found by the fuzz harness: with no end_header, CGAL's reader reads the body from the end of
+  // the stream, lists of counts it never read (a binary PLY: no byte of it read as a count)
+  {
+    std::ofstream open_header("no_end_header.ply", std::ios::binary);
+    open_header << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty list int int vertex_indices\n"
+                << std::string("\xff\xff\xff\x7f\0\0\0\0", 8);
+  }
+  check_error("PLY header without end_header", "no_end_header.ply --atlas", "end_header");
   // found by the fuzz harness: CGAL 5.5.1's PLY reader adds a property to an element that is not there
   std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
                                          "property float y\nend_header\n0 0\n";
