@@ -893,6 +893,38 @@ void bent_strips()
     SMP_CHECK(chart.ok && !SMP::internal::straighten_strip(chart, settings.max_stretch) && chart.uv == before,
               "not a bent strip (" << turn << "): ok " << chart.ok << ", fill " << (chart.ok ? rectangle_fill(chart) : 0.));
   }
+  // the segments near a point: every point on a segment between two breaks, less than 1.5
+  // times the segment's length beyond its ends, finds that stretch among those it is given
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> step(-1., 1.), share(0., 1.), beyond(-1.4999, 2.4999);
+  for(int trial = 0; trial < 20; ++trial) {
+    std::vector<SMP::internal::Vec2> first(30), second(30), points;
+    std::vector<std::pair<std::size_t, std::size_t> > expected; // point, stretch
+    for(std::size_t k = 0; k < first.size(); ++k) {
+      first[k] = {k == 0 ? 0. : first[k - 1][0] + step(random), k == 0 ? 0. : first[k - 1][1] + step(random)};
+      second[k] = {first[k][0] + 0.1 * step(random), first[k][1] + 0.1 * step(random)};
+    }
+    for(int n = 0; n < 200; ++n) {
+      const std::size_t k = std::size_t(random() % (first.size() - 1));
+      const double s = share(random), d = beyond(random);
+      SMP::internal::Vec2 p{0., 0.};
+      for(int i = 0; i < 2; ++i) {
+        const double a = (1. - s) * first[k][i] + s * first[k + 1][i], b = (1. - s) * second[k][i] + s * second[k + 1][i];
+        p[i] = a + d * (b - a);
+      }
+      expected.emplace_back(points.size(), k);
+      points.push_back(p);
+    }
+    const std::vector<std::vector<std::size_t> > near = SMP::internal::stretches_near(points, first, second);
+    std::size_t missed = 0, unsorted = 0;
+    for(const auto& e : expected) {
+      const std::vector<std::size_t>& found = near[e.first];
+      missed += std::find(found.begin(), found.end(), e.second) == found.end() ? 1 : 0;
+      unsorted += std::is_sorted(found.begin(), found.end()) ? 0 : 1;
+    }
+    SMP_CHECK(missed == 0 && unsorted == 0, "segments near a point, trial " << trial << ": " << missed << " missed, "
+                                                                              << unsorted << " unsorted");
+  }
   // free-border steps from a squeezed arc, two border vertices pinned
   SMP::internal::Chart_map arc = arc_chart(40, 2, 0.04, 1., false);
   std::vector<SMP::internal::Vec2> uv;

@@ -17,6 +17,9 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_packing.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
 
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
+#include <CGAL/box_intersection_d.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -153,6 +156,46 @@ private:
   double m_length = 0.;
 };
 
+// For each point of `uv`, the stretches k between the segments [first[k], second[k]] and
+// [first[k + 1], second[k + 1]] (the sides linear in between, so that the segments in between
+// sweep the quadrilateral of their ends) where the point may lie on a segment carried on as a
+// line by less than 1.5 times the segment's length beyond its ends: those whose box of the
+// segments so carried on, with a margin, holds the point. In increasing order of k.
+inline std::vector<std::vector<std::size_t> > stretches_near(const std::vector<Vec2>& uv, const std::vector<Vec2>& first,
+                                                             const std::vector<Vec2>& second)
+{
+  typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t> Box;
+  double scale = 0.;
+  for(const Vec2& p : uv) scale = (std::max)(scale, (std::max)(std::abs(p[0]), std::abs(p[1])));
+  std::vector<Box> stretch_boxes, point_boxes;
+  for(std::size_t k = 0; k + 1 < first.size(); ++k) {
+    double low[2] = {HUGE_VAL, HUGE_VAL}, high[2] = {-HUGE_VAL, -HUGE_VAL};
+    for(std::size_t e = k; e <= k + 1; ++e)
+      for(double d : {-2., 3.})
+        for(int i = 0; i < 2; ++i) {
+          const double x = first[e][i] + d * (second[e][i] - first[e][i]);
+          low[i] = (std::min)(low[i], x);
+          high[i] = (std::max)(high[i], x);
+        }
+    for(int i = 0; i < 2; ++i) {
+      const double margin = 1e-9 * (scale + high[i] - low[i]);
+      low[i] -= margin;
+      high[i] += margin;
+    }
+    if(std::isfinite(low[0]) && std::isfinite(low[1]) && std::isfinite(high[0]) && std::isfinite(high[1]))
+      stretch_boxes.emplace_back(low, high, k);
+  }
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    double at[2] = {uv[v][0], uv[v][1]};
+    point_boxes.emplace_back(at, at, v);
+  }
+  std::vector<std::vector<std::size_t> > near(uv.size());
+  CGAL::box_intersection_d(point_boxes.begin(), point_boxes.end(), stretch_boxes.begin(), stretch_boxes.end(),
+                           [&near](const Box& point, const Box& stretch) { near[point.info()].push_back(stretch.info()); });
+  for(std::vector<std::size_t>& k : near) std::sort(k.begin(), k.end());
+  return near;
+}
+
 // Lays `chart` (flattened, with no slit and no polish pending) out straight if it is a bent
 // strip: it fills less than 60% of its smallest bounding rectangle, and its border is two ends
 // (strip_ends(), looked for in stretches three times its mean width long) and two sides at
@@ -228,10 +271,10 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
   // the vertices of a ragged end are. A segment carried on as a line may pass the vertex
   // elsewhere too, where the strip turns back: the vertex is taken on the segment that holds it,
   // or on the nearest one.
-  const auto ahead = [&](const Vec2& p, double t) {
-    const Vec2 a = first.at(t), b = second.at(t);
+  const auto ahead_of = [](const Vec2& p, const Vec2& a, const Vec2& b) {
     return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
   };
+  const auto ahead = [&](const Vec2& p, double t) { return ahead_of(p, first.at(t), second.at(t)); };
   const double reach = (std::max)(0.01, end_length / shorter);
   std::vector<double> breaks = first.shares();
   breaks.insert(breaks.end(), second.shares().begin(), second.shares().end());
@@ -239,8 +282,12 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
   breaks.push_back(1. + reach);
   std::sort(breaks.begin(), breaks.end());
   breaks.erase(std::unique(breaks.begin(), breaks.end()), breaks.end());
-  if(double(breaks.size()) * double(uv.size()) > 5e7) // the time would go as the square of the strip
-    return false;
+  std::vector<Vec2> first_at(breaks.size()), second_at(breaks.size()); // the segments at the breaks
+  for(std::size_t k = 0; k < breaks.size(); ++k) {
+    first_at[k] = first.at(breaks[k]);
+    second_at[k] = second.at(breaks[k]);
+  }
+  const std::vector<std::vector<std::size_t> > stretches = stretches_near(uv, first_at, second_at);
   std::vector<Vec2> straight(uv.size());
   // the corners, on the segments of shares 0 and 1 (one corner: a pointed end)
   std::vector<char> corner(uv.size(), 0);
@@ -255,12 +302,9 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
     if(corner[v]) continue;
     const Vec2& p = uv[v];
     double best = HUGE_VAL; // how far the share d is from [0, 1]
-    double g_low = ahead(p, breaks.front());
-    for(std::size_t k = 0; k + 1 < breaks.size(); ++k) {
-      const double g_high = ahead(p, breaks[k + 1]);
-      const bool crossed = g_low <= 0. && g_high > 0.;
-      g_low = g_high;
-      if(!crossed) continue;
+    for(std::size_t k : stretches[v]) {
+      if(!(ahead_of(p, first_at[k], second_at[k]) <= 0. && ahead_of(p, first_at[k + 1], second_at[k + 1]) > 0.))
+        continue;
       double low = breaks[k], high = breaks[k + 1];
       for(int i = 0; i < 50; ++i) {
         const double middle = 0.5 * (low + high);
