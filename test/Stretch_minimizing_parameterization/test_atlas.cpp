@@ -856,6 +856,75 @@ double rectangle_fill(const SMP::internal::Chart_map& chart)
   return area / (extent[0] * extent[1]);
 }
 
+// A planar chart of the unit cells (i, j) of a grid that `cell` lists, two triangles each, laid
+// out as it is (uv = xy).
+SMP::internal::Chart_map cells_chart(const std::vector<std::array<int, 2> >& cells)
+{
+  SMP::internal::Chart_map chart;
+  std::map<std::array<int, 2>, int> corner;
+  const auto vertex = [&](int i, int j) {
+    const auto it = corner.find({i, j});
+    if(it != corner.end()) return it->second;
+    chart.flat.xyz.push_back({double(i), double(j), 0.});
+    chart.uv.push_back({double(i), double(j)});
+    return corner[{i, j}] = int(chart.flat.xyz.size()) - 1;
+  };
+  for(const std::array<int, 2>& c : cells) {
+    const int a = vertex(c[0], c[1]), b = vertex(c[0] + 1, c[1]), d = vertex(c[0] + 1, c[1] + 1), e = vertex(c[0], c[1] + 1);
+    chart.flat.tri.push_back({a, b, d});
+    chart.flat.tri.push_back({a, d, e});
+  }
+  for(std::size_t t = 0; t < chart.flat.tri.size(); ++t)
+    chart.triangles.push_back(t);
+  chart.ok = true;
+  chart.l2 = 1.;
+  return chart;
+}
+
+// A band of two cells' width with sharp corners (an L, a U) is cut at each corner, its legs
+// apart; a straight band and an arc bent gently (over two widths) are not cut.
+void strip_turn_cuts()
+{
+  const int n = 30;
+  std::vector<std::array<int, 2> > straight, l_band, u_band;
+  for(int i = 0; i < n + 2; ++i)
+    for(int j = 0; j < 2; ++j) {
+      straight.push_back({i, j});
+      l_band.push_back({i, j});
+      u_band.push_back({i, j});
+    }
+  for(int i = n; i < n + 2; ++i)
+    for(int j = 2; j < n + 2; ++j) {
+      l_band.push_back({i, j});
+      u_band.push_back({i, j});
+    }
+  for(int i = n - 1; i >= 0; --i) // the U's third leg, back along the first
+    for(int j = n; j < n + 2; ++j)
+      u_band.push_back({i, j});
+  std::vector<int> part;
+  int parts = 0;
+  SMP::internal::Chart_map l_chart = cells_chart(l_band), u_chart = cells_chart(u_band);
+  const bool l_cut = SMP::internal::strip_turn_cut(l_chart, part, parts);
+  // the first triangle is at the end of the first leg, the last at the end of the last leg
+  SMP_CHECK(l_cut && parts == 2 && part.front() != part.back(), "L band: cut " << l_cut << ", parts " << parts);
+  const bool u_cut = SMP::internal::strip_turn_cut(u_chart, part, parts);
+  bool legs_apart = u_cut && part.size() == u_chart.flat.tri.size();
+  if(legs_apart) { // the middle of each leg in a part of its own
+    const int first = part[std::size_t(2 * (n / 2) * 2)], second = part[std::size_t(2 * ((n + 2) * 2 + n / 2))],
+              third = part[std::size_t(2 * ((n + 2) * 2 + 2 * n + n))];
+    legs_apart = first != second && second != third && first != third;
+  }
+  SMP_CHECK(u_cut && parts == 3 && legs_apart, "U band: cut " << u_cut << ", parts " << parts << ", legs apart " << legs_apart);
+  SMP::internal::Chart_map line = cells_chart(straight);
+  SMP_CHECK(!SMP::internal::strip_turn_cut(line, part, parts), "straight band cut");
+  SMP::internal::Chart_map arc = arc_chart(200, 2, 0.04, 1.5 * 3.14159265358979323846, false);
+  for(const SMP::internal::Vec3& p : arc.flat.xyz)
+    arc.uv.push_back({p[0], p[1]});
+  arc.ok = true;
+  arc.l2 = 1.;
+  SMP_CHECK(!SMP::internal::strip_turn_cut(arc, part, parts), "gently bent arc cut into " << parts);
+}
+
 // A bent strip is laid out straight, flip-free and within a hundredth of its stretch (a band of
 // width 0.04 around a circle of radius 1 changes lengths by 2% at most), with an ear or a pointed
 // end too (one bent by three quarters of a turn is left as it is: the vertices beside its tip
@@ -1988,6 +2057,7 @@ int run_test(int argc, char** argv)
   vertex_sort();
   chart_starts();
   bent_strips();
+  strip_turn_cuts();
   deferred_polish();
   polish_left_out_when_it_gains_too_little();
   conformal_map_minimum();

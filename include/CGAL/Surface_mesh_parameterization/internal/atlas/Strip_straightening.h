@@ -9,7 +9,8 @@
 // it then takes a small share of its bounding rectangle, and the packing fills the hollow of an
 // arc with little but thinner arcs. A strip of width w bent with radius R laid out straight has
 // its lengths changed by about w / (2 R) only, so such a chart is laid out straight (see
-// straighten_strip()), and keeps that layout where its stretch stays low.
+// straighten_strip()), and keeps that layout where its stretch stays low. A thin chart that
+// turns sharply (at the corners of a rim) is cut there instead (see strip_turn_cut()).
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -19,6 +20,9 @@
 
 #include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/box_intersection_d.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/dijkstra_shortest_paths.hpp>
 
 #include <algorithm>
 #include <array>
@@ -130,6 +134,7 @@ inline bool strip_ends(const std::vector<int>& loop, const std::vector<Vec2>& uv
 class Polyline_by_length
 {
 public:
+  Polyline_by_length() = default;
   explicit Polyline_by_length(const std::vector<Vec2>& points)
   {
     for(const Vec2& q : points)
@@ -196,23 +201,24 @@ inline std::vector<std::vector<std::size_t> > stretches_near(const std::vector<V
   return near;
 }
 
-// Lays `chart` (flattened, with no slit and no polish pending) out straight if it is a bent
-// strip: it fills less than 60% of its smallest bounding rectangle, and its border is two ends
-// (strip_ends(), looked for in stretches three times its mean width long) and two sides at
-// least four times as long as the ends and of lengths within 30% of each other. The sides, each
-// from the first end to the second, give the segments from the point at a share t of the length
-// of one to the point at that share of the other (for a strip bent on a circle, its radii); a
-// chart vertex on the segment of t, at a share d of it from the first side, goes to
-// (t L, (d - 1/2) w(t)), L the sides' mean length and w(t) the segment's length. The sides are
-// taken without their vertices of one triangle (the tip of a triangle that sticks out of the
-// border), which would come out on one line with their neighbours. Where the strip turns
-// sharply, its sides have lengths that no segments pair well, and the layout shears the strip:
-// free-border Newton steps on Sander's stretch, the four corners pinned, take the shear to
-// where the strip turns (they keep every triangle's orientation and the border simple, and
-// refuse a start that is not). The layout is kept if its L2 stretch is within `max_stretch` and
-// within a hundredth of the chart's; then true. (A vertex beside a pointed end, where the
-// segments shrink to the tip, may be found on no segment: such a strip is left bent.)
-inline bool straighten_strip(Chart_map& chart, double max_stretch)
+// The shape of a chart that is a bent strip: its border loop (the chart on its left), its two
+// ends (pairs of loop positions, see strip_ends()) and its two sides, each from the first end to
+// the second, taken without their vertices of one triangle (the tip of a triangle that sticks
+// out of the border, which would come out on one line with its neighbours).
+struct Strip_shape
+{
+  std::vector<int> loop;
+  std::array<std::pair<std::size_t, std::size_t>, 2> ends;
+  Polyline_by_length first, second;
+  double end_length = 0.; // the longer end, from its first corner to its last
+  double width = 0.;      // the mean width: the area over half the perimeter
+};
+
+// Whether `chart` (flattened, with no slit and no polish pending) is a bent strip, and its shape
+// into `shape`: it fills less than 60% of its smallest bounding rectangle, and its border is two
+// ends (strip_ends(), looked for in stretches three times its mean width long) and two sides at
+// least four times as long as the ends and of lengths within 30% of each other.
+inline bool bent_strip(const Chart_map& chart, Strip_shape& shape)
 {
   if(!chart.ok || !chart.slits.empty() || chart.deferred.pending || chart.flat.tri.size() < 2)
     return false;
@@ -225,7 +231,8 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
   const Vec2 extent = align_chart(aligned);
   if(!(area > 0.) || !(area < 0.6 * extent[0] * extent[1]))
     return false;
-  const std::vector<int> loop = border_loop(tri, uv.size());
+  shape.loop = border_loop(tri, uv.size());
+  const std::vector<int>& loop = shape.loop;
   const std::size_t n = loop.size();
   if(n < 4)
     return false;
@@ -234,10 +241,10 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
     const Vec2 &a = uv[std::size_t(loop[i])], &b = uv[std::size_t(loop[(i + 1) % n])];
     perimeter += std::hypot(b[0] - a[0], b[1] - a[1]);
   }
-  // a strip's mean width is about its area over half its perimeter
+  shape.width = 2. * area / perimeter;
   const double balance = 1.3;
-  std::array<std::pair<std::size_t, std::size_t>, 2> ends;
-  if(!strip_ends(loop, uv, 6. * area / perimeter, balance, ends))
+  std::array<std::pair<std::size_t, std::size_t>, 2>& ends = shape.ends;
+  if(!strip_ends(loop, uv, 3. * shape.width, balance, ends))
     return false;
   std::vector<int> triangles_at(uv.size(), 0);
   for(const Triangle& t : tri)
@@ -252,19 +259,42 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
     }
     return Polyline_by_length(points);
   };
-  const Polyline_by_length first = side(ends[0].second, ends[1].first, false);
-  const Polyline_by_length second = side(ends[0].first, ends[1].second, true);
-  if(!first.valid() || !second.valid())
+  shape.first = side(ends[0].second, ends[1].first, false);
+  shape.second = side(ends[0].first, ends[1].second, true);
+  if(!shape.first.valid() || !shape.second.valid())
     return false;
-  const double shorter = (std::min)(first.length(), second.length());
-  const double longer = (std::max)(first.length(), second.length());
-  double end_length = 0.;
+  const double shorter = (std::min)(shape.first.length(), shape.second.length());
+  const double longer = (std::max)(shape.first.length(), shape.second.length());
+  shape.end_length = 0.;
   for(const auto& e : ends) {
     const Vec2 &a = uv[std::size_t(loop[e.first])], &b = uv[std::size_t(loop[e.second])];
-    end_length = (std::max)(end_length, std::hypot(b[0] - a[0], b[1] - a[1]));
+    shape.end_length = (std::max)(shape.end_length, std::hypot(b[0] - a[0], b[1] - a[1]));
   }
-  if(!(shorter >= 4. * end_length) || !(longer <= balance * shorter))
+  return shorter >= 4. * shape.end_length && longer <= balance * shorter;
+}
+
+// Lays `chart` out straight if it is a bent strip (bent_strip()). The sides give the segments
+// from the point at a share t of the length of one to the point at that share of the other (for
+// a strip bent on a circle, its radii); a chart vertex on the segment of t, at a share d of it
+// from the first side, goes to (t L, (d - 1/2) w(t)), L the sides' mean length and w(t) the
+// segment's length. Where the strip turns sharply, its sides have lengths that no segments pair
+// well, and the layout shears the strip: free-border Newton steps on Sander's stretch, the four
+// corners pinned, take the shear to where the strip turns (they keep every triangle's
+// orientation and the border simple, and refuse a start that is not). The layout is kept if its
+// L2 stretch is within `max_stretch` and within a hundredth of the chart's; then true. (A vertex
+// beside a pointed end, where the segments shrink to the tip, may be found on no segment: such
+// a strip is left bent.)
+inline bool straighten_strip(Chart_map& chart, double max_stretch)
+{
+  Strip_shape shape;
+  if(!bent_strip(chart, shape))
     return false;
+  const std::vector<Triangle>& tri = chart.flat.tri;
+  const std::vector<Vec2>& uv = chart.uv;
+  const std::vector<int>& loop = shape.loop;
+  const std::array<std::pair<std::size_t, std::size_t>, 2>& ends = shape.ends;
+  const Polyline_by_length &first = shape.first, &second = shape.second;
+  const double shorter = (std::min)(first.length(), second.length()), end_length = shape.end_length;
   const double length = 0.5 * (first.length() + second.length());
   // The segment of a vertex: where the segment's side of it changes from ahead of it to behind
   // it, between two breaks of the sides; segments are looked for a little beyond the ends, where
@@ -344,6 +374,124 @@ inline bool straighten_strip(Chart_map& chart, double max_stretch)
     return false;
   chart.uv.swap(straight);
   chart.l2 = s.l2;
+  return true;
+}
+
+// The distance of each vertex of a flattened chart from `source` along its edges in uv
+// (Dijkstra's, on Boost's graph).
+inline std::vector<double> uv_distances(const std::vector<Triangle>& tri, const std::vector<Vec2>& uv, int source)
+{
+  typedef boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                                boost::property<boost::edge_weight_t, double> >
+      Graph;
+  Graph graph(uv.size());
+  for(const Triangle& t : tri) // an inner edge twice, once from each side: the same paths
+    for(int k = 0; k < 3; ++k) {
+      const std::size_t a = std::size_t(t[std::size_t(k)]), b = std::size_t(t[std::size_t((k + 1) % 3)]);
+      boost::add_edge(a, b, std::hypot(uv[b][0] - uv[a][0], uv[b][1] - uv[a][1]), graph);
+    }
+  std::vector<double> distance(uv.size(), HUGE_VAL);
+  boost::dijkstra_shortest_paths(
+      graph, std::size_t(source),
+      boost::distance_map(boost::make_iterator_property_map(distance.begin(), boost::get(boost::vertex_index, graph))));
+  return distance;
+}
+
+// Where a long thin chart that stays bent is cut across: at its sharp turns, where the line of
+// its middle turns by more than a quarter turn within two widths on either side (a band around
+// the rim of a CAD part turns at its corners: its straight pieces pack well, the band does not).
+// The chart fills less than 60% of its smallest bounding rectangle and is more than eight widths
+// long (its width: twice its area over its perimeter, or its mean edge length if longer); its
+// length is the distance in uv along its edges from a vertex farthest from another, its middle
+// line the mean position of the vertices in each half width of that distance, and a cut leaves
+// the triangles below the turn's distance on one side, the sharpest turns first, two widths
+// apart at least. `part` gets the part of each triangle, `parts` their number; false if there
+// is no such turn.
+inline bool strip_turn_cut(const Chart_map& chart, std::vector<int>& part, int& parts)
+{
+  if(!chart.ok || !chart.slits.empty() || chart.deferred.pending || chart.flat.tri.size() < 8)
+    return false;
+  const std::vector<Triangle>& tri = chart.flat.tri;
+  const std::vector<Vec2>& uv = chart.uv;
+  double area = 0., perimeter = 0.;
+  for(const Triangle& t : tri)
+    area += 0.5 * twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]);
+  for(const std::array<int, 2>& side : chart_outline(tri))
+    perimeter += std::hypot(uv[std::size_t(side[1])][0] - uv[std::size_t(side[0])][0],
+                            uv[std::size_t(side[1])][1] - uv[std::size_t(side[0])][1]);
+  std::vector<Vec2> aligned = uv;
+  const Vec2 extent = align_chart(aligned);
+  if(!(area > 0.) || !(area < 0.6 * extent[0] * extent[1]) || !(perimeter > 0.))
+    return false;
+  const double width = 2. * area / perimeter;
+  std::vector<double> distance = uv_distances(tri, uv, tri[0][0]);
+  const std::size_t far = std::size_t(std::max_element(distance.begin(), distance.end(), [](double a, double b) {
+                                        return (std::isfinite(a) ? a : -1.) < (std::isfinite(b) ? b : -1.);
+                                      }) - distance.begin());
+  distance = uv_distances(tri, uv, int(far));
+  double length = 0.;
+  for(double d : distance)
+    if(std::isfinite(d)) length = (std::max)(length, d);
+  // the middle line: the mean position of the vertices in each stretch of half a width (or of
+  // an edge, where the edges are longer) of distance that holds any
+  double edges = 0.;
+  for(const Triangle& t : tri)
+    for(int k = 0; k < 3; ++k) {
+      const Vec2 &a = uv[std::size_t(t[std::size_t(k)])], &b = uv[std::size_t(t[std::size_t((k + 1) % 3)])];
+      edges += std::hypot(b[0] - a[0], b[1] - a[1]);
+    }
+  const double reach = 2. * (std::max)(width, edges / double(3 * tri.size())); // two widths
+  const double step = 0.25 * reach;
+  if(!(length > 4. * reach) || !(length < 1e5 * step))
+    return false;
+  const std::size_t bins = std::size_t(length / step) + 1;
+  std::vector<Vec2> sum(bins, Vec2{0., 0.});
+  std::vector<std::size_t> count(bins, 0);
+  for(std::size_t v = 0; v < uv.size(); ++v) {
+    if(!std::isfinite(distance[v])) return false; // the chart is in one piece
+    const std::size_t b = (std::min)(bins - 1, std::size_t(distance[v] / step));
+    sum[b][0] += uv[v][0];
+    sum[b][1] += uv[v][1];
+    ++count[b];
+  }
+  std::vector<Vec2> middle;
+  std::vector<double> at; // the distance of each point of the middle line
+  for(std::size_t b = 0; b < bins; ++b)
+    if(count[b] > 0) {
+      middle.push_back({sum[b][0] / double(count[b]), sum[b][1] / double(count[b])});
+      at.push_back((double(b) + 0.5) * step);
+    }
+  // the turn at each point of the middle line, from the points two widths before and after
+  const std::size_t n = middle.size();
+  std::vector<double> turn(n, 0.);
+  for(std::size_t i = 0, before = 0, after = 0; i < n; ++i) {
+    while(before + 1 < i && at[before + 1] <= at[i] - reach) ++before;
+    while(after < n && at[after] < at[i] + reach) ++after;
+    if(!(at[before] <= at[i] - reach) || after == n)
+      continue;
+    const Vec2 &a = middle[before], &m = middle[i], &c = middle[after];
+    const Vec2 in{m[0] - a[0], m[1] - a[1]}, out{c[0] - m[0], c[1] - m[1]};
+    turn[i] = std::abs(std::atan2(in[0] * out[1] - in[1] * out[0], in[0] * out[0] + in[1] * out[1]));
+  }
+  // the sharpest turns first, each keeping the others two widths away
+  std::vector<std::size_t> order(n);
+  for(std::size_t i = 0; i < n; ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&turn](std::size_t a, std::size_t b) { return turn[a] > turn[b]; });
+  std::vector<double> cuts;
+  for(std::size_t i : order) {
+    if(!(turn[i] > 0.25 * 3.14159265358979323846)) break;
+    if(std::none_of(cuts.begin(), cuts.end(), [&](double d) { return std::abs(d - at[i]) < reach; }))
+      cuts.push_back(at[i]);
+  }
+  if(cuts.empty())
+    return false;
+  std::sort(cuts.begin(), cuts.end());
+  part.resize(tri.size());
+  for(std::size_t i = 0; i < tri.size(); ++i) {
+    const double d = (distance[std::size_t(tri[i][0])] + distance[std::size_t(tri[i][1])] + distance[std::size_t(tri[i][2])]) / 3.;
+    part[i] = int(std::upper_bound(cuts.begin(), cuts.end(), d) - cuts.begin());
+  }
+  parts = int(cuts.size()) + 1;
   return true;
 }
 

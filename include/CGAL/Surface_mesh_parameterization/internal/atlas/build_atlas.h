@@ -6,7 +6,8 @@
 
 // The atlas of a triangulated soup: charts grown, flattened and cut while above the stretch
 // bound (in two, or in several parts at once when far above it), bent strips laid out
-// straight, packed (the longest cut across while the square is poorly filled), then written
+// straight, thin charts that stay bent cut at their sharp turns, packed (the longest cut across
+// while the square is poorly filled), then written
 // per polygon corner with the report's measures. make_atlas() reads the input and calls it.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
@@ -420,6 +421,49 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     r.seconds_parameterization += seconds_since(t1);
   };
   straighten(0);
+  // the thin charts that stay bent cut at their sharp turns (strip_turn_cut()), and their pieces
+  // in turn, where the pieces' smallest rectangles take less room than the chart's: the straight
+  // pieces of a band with corners then pack where its hollow was left unused
+  auto room = [&](std::size_t c) { // of chart c's smallest rectangle, in surface units
+    std::vector<Vec2> turned = charts[c].uv;
+    const Vec2 extent = align_chart(turned);
+    return areas[c].uv > 0. ? extent[0] * extent[1] * areas[c].surface / areas[c].uv : 0.;
+  };
+  for(std::size_t c = 0; c < charts.size(); ++c) {
+    std::vector<int> part;
+    int parts = 0;
+    if(charts[c].triangles.empty() || !strip_turn_cut(charts[c], part, parts))
+      continue;
+    const std::size_t before = charts.size();
+    const double whole_room = room(c);
+    Chart_map whole = charts[c];
+    Chart_growing::Snapshot growing = g.snapshot();
+    const auto t1 = std::chrono::steady_clock::now();
+    const bool parted = split(c, part, parts, true);
+    r.seconds_cutting += seconds_since(t1);
+    if(!parted)
+      continue;
+    settle(before, false, settings.chart);
+    straighten(before);
+    // kept if the pieces are flattened within the bound as they are (not cut further)
+    double pieces_room = 0.;
+    int pieces = 0;
+    bool flattened = true;
+    for(std::size_t k = before; k < charts.size(); ++k)
+      if(!charts[k].triangles.empty()) {
+        flattened = flattened && charts[k].ok;
+        pieces_room += room(k);
+        ++pieces;
+      }
+    if(flattened && pieces == parts && pieces_room < 0.9 * whole_room)
+      continue;
+    charts.resize(before);
+    members.resize(before);
+    angle.resize(before);
+    areas.resize(before);
+    charts[c] = std::move(whole);
+    g.restore(std::move(growing));
+  }
 
   // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
   // longest chart (the one that leaves the most room unused around it) is cut across. A cut
