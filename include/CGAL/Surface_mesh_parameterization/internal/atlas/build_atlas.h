@@ -7,8 +7,8 @@
 // The atlas of a triangulated soup: charts grown, flattened and cut while above the stretch
 // bound (in two, or in several parts at once when far above it), bent strips laid out
 // straight, thin charts that stay bent cut at their sharp turns, packed (the longest cut across
-// while the square is poorly filled), then written
-// per polygon corner with the report's measures. make_atlas() reads the input and calls it.
+// while the square is poorly filled), then written per polygon corner with the report's
+// measures. make_atlas() reads the input and calls it.
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
