@@ -421,6 +421,16 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     r.seconds_parameterization += seconds_since(t1);
   };
   straighten(0);
+  // undoes the split of chart c: the charts from `before` on dropped, c's map and the growing
+  // as they were
+  auto take_back = [&](std::size_t c, std::size_t before, Chart_map& whole, Chart_growing::Snapshot& growing) {
+    charts.resize(before);
+    members.resize(before);
+    angle.resize(before);
+    areas.resize(before);
+    charts[c] = std::move(whole);
+    g.restore(std::move(growing));
+  };
   // the thin charts that stay bent cut at their sharp turns (strip_turn_cut()), and their pieces
   // in turn, where the pieces' smallest rectangles take less room than the chart's: the straight
   // pieces of a band with corners then pack where its hollow was left unused
@@ -455,14 +465,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         pieces_room += room(k);
         ++pieces;
       }
-    if(flattened && pieces == parts && pieces_room < 0.9 * whole_room)
-      continue;
-    charts.resize(before);
-    members.resize(before);
-    angle.resize(before);
-    areas.resize(before);
-    charts[c] = std::move(whole);
-    g.restore(std::move(growing));
+    if(!(flattened && pieces == parts && pieces_room < 0.9 * whole_room))
+      take_back(c, before, whole, growing);
   }
 
   // pack the charts that hold triangles; while a coarse packing fills the square poorly, the
@@ -587,12 +591,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       }
       halves_taken_back[c].assign(std::make_move_iterator(charts.begin() + std::ptrdiff_t(before)),
                                   std::make_move_iterator(charts.end()));
-      charts.resize(before);
-      members.resize(before);
-      angle.resize(before);
-      areas.resize(before);
-      charts[c] = std::move(whole);
-      g.restore(std::move(growing));
+      take_back(c, before, whole, growing);
       gather();
       tried[c] = 1;
       ++taken_back;
