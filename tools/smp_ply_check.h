@@ -7,10 +7,12 @@
 // What the tools check in a PLY file before CGAL 5.5.1's reader reads it, where that reader
 // would misbehave: counts in the header that the file cannot hold (it reserves them, and skips
 // the items of an element it does not read one by one), a property before any element, a
-// header with no end (it then reads the body from the stream's end, counts of values it never
-// read), and lists whose count the rest of the file cannot hold (it resizes a list to its count
-// before reading its items, so that a file of a few bytes can make it fill gigabytes).
+// header with no end, a body that ends early or an ASCII value that its stream fails to read (it
+// then reads on from a failed stream: values it never wrote, as counts of lists too), and lists
+// whose count the rest of the file cannot hold (it resizes a list to its count before reading
+// its items, so that a file of a few bytes can make it fill gigabytes).
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <istream>
@@ -21,22 +23,6 @@
 
 namespace smp_tools {
 namespace internal {
-
-// How one property of a PLY element that CGAL reads is stored: a scalar of `bytes` bytes, or a
-// list of items of `bytes` bytes after an integer count of `count_bytes` bytes (signed or not).
-struct Ply_property_layout
-{
-  bool list = false;
-  int count_bytes = 0;
-  bool count_signed = false;
-  int bytes = 0;
-};
-
-struct Ply_element_layout
-{
-  std::uintmax_t count = 0;
-  std::vector<Ply_property_layout> properties;
-};
 
 // How a PLY scalar type is stored: its bytes (0 if CGAL does not know it), whether it is signed
 // and whether it is an integer.
@@ -63,12 +49,55 @@ inline Ply_type ply_type(const std::string& name)
   return Ply_type();
 }
 
-// The lists of the body of a PLY file (from `in`'s position; `left` bytes), as laid out by
-// `elements`: false, with a message, if a list announces more items than the rest of the file
-// can hold (or a negative number of them). Stops without complaint where the file ends early:
-// the reader says what is wrong there.
-inline bool check_ply_lists(std::istream& in, std::uintmax_t left, bool ascii, bool big_endian,
-                            const std::vector<Ply_element_layout>& elements, std::string& error)
+// How one property of a PLY element that CGAL reads is stored: a value of type `item`, or, for a
+// list, an integer count of type `count` then that many values of type `item`.
+struct Ply_property_layout
+{
+  bool list = false;
+  Ply_type count, item;
+};
+
+struct Ply_element_layout
+{
+  std::uintmax_t count = 0;
+  std::vector<Ply_property_layout> properties;
+};
+
+// The value of the ASCII token `token` read as CGAL's reader reads a value of type `type` into
+// `value`; false if that read would fail (then the reader's stream is failed, and every later
+// value it reads is a variable never written: a list's count among them). An integer: digits
+// after an optional sign (no sign for an unsigned type), within the range of the type, or of a
+// short for a byte, which CGAL reads as a short and narrows. A floating point number: the
+// characters the standard reader takes, the whole token, finite.
+inline bool ply_ascii_value(const std::string& token, const Ply_type& type, double& value)
+{
+  if(token.empty())
+    return false;
+  char* stop = nullptr;
+  if(type.integer) {
+    const std::size_t digits = token[0] == '+' || token[0] == '-' ? 1 : 0;
+    if(digits == token.size() || token.find_first_not_of("0123456789", digits) != std::string::npos ||
+       (!type.is_signed && token[0] == '-'))
+      return false;
+    value = std::strtod(token.c_str(), &stop);
+    const int bits = 8 * (type.bytes < 2 ? 2 : type.bytes);
+    const double high = type.is_signed ? std::ldexp(1., bits - 1) - 1. : std::ldexp(1., bits) - 1.;
+    const double low = type.is_signed ? -std::ldexp(1., bits - 1) : 0.;
+    return value >= low && value <= high;
+  }
+  if(token.find_first_not_of("0123456789+-.eE") != std::string::npos)
+    return false;
+  value = std::strtod(token.c_str(), &stop);
+  return stop == token.c_str() + token.size() && std::isfinite(value);
+}
+
+// The body of a PLY file (from `in`'s position; `left` bytes), as laid out by `elements`: false,
+// with a message, if it ends before its elements do, if a list announces more items than the
+// rest of the file can hold (or a negative number of them), or if an ASCII value is not one
+// CGAL's reader reads as a value of its type (see ply_ascii_value()). In each of these cases
+// CGAL 5.5.1's reader would read values it never wrote, as counts of lists too.
+inline bool check_ply_body(std::istream& in, std::uintmax_t left, bool ascii, bool big_endian,
+                           const std::vector<Ply_element_layout>& elements, std::string& error)
 {
   const std::uintmax_t body = left;
   auto refuse = [&](double count) {
@@ -77,15 +106,25 @@ inline bool check_ply_lists(std::istream& in, std::uintmax_t left, bool ascii, b
     error = m.str();
     return false;
   };
+  auto ends_early = [&]() {
+    error = "the PLY body ends before its elements do";
+    return false;
+  };
   std::istreambuf_iterator<char> at(in), end;
   std::string token;
+  auto not_a_value = [&]() {
+    std::string shown;
+    for(char c : token.substr(0, 24)) shown.push_back(c > ' ' && c < 127 ? c : '?');
+    error = "a PLY value that is not a number of its type: '" + shown + "'";
+    return false;
+  };
   auto space = [](char c) { return c == ' ' || c == '\n' || c == '\r' || c == '\t' || c == '\v' || c == '\f'; };
-  auto next_token = [&](bool keep) { // false at the end of the file; `token` holds it if `keep`
+  auto next_token = [&]() { // false at the end of the file
     token.clear();
     while(at != end && space(*at)) ++at;
     if(at == end) return false;
     for(; at != end && !space(*at); ++at)
-      if(keep) token.push_back(*at);
+      token.push_back(*at);
     return true;
   };
   auto skip_bytes = [&](std::uintmax_t n) {
@@ -99,48 +138,51 @@ inline bool check_ply_lists(std::istream& in, std::uintmax_t left, bool ascii, b
     std::uintmax_t item_bytes = 0;
     for(const Ply_property_layout& p : element.properties) {
       scalars_only = scalars_only && !p.list;
-      item_bytes += std::uintmax_t(p.bytes);
+      item_bytes += std::uintmax_t(p.item.bytes);
     }
-    if(scalars_only && !ascii) { // nothing to check: skipped whole
-      if(item_bytes > 0 && element.count > left / item_bytes) return true;
-      if(!skip_bytes(element.count * item_bytes)) return true;
+    if(scalars_only && !ascii) { // nothing to check but its size: skipped whole
+      if(item_bytes > 0 && element.count > left / item_bytes) return ends_early();
+      skip_bytes(element.count * item_bytes);
       continue;
     }
     for(std::uintmax_t item = 0; item < element.count; ++item)
       for(const Ply_property_layout& p : element.properties) {
-        double count = 0.;
         if(ascii) {
-          if(!next_token(p.list)) return true;
+          double value = 0.;
+          if(!next_token()) return ends_early();
+          if(!ply_ascii_value(token, p.list ? p.count : p.item, value)) return not_a_value();
           if(!p.list) continue;
-          char* stop = nullptr;
-          count = std::strtod(token.c_str(), &stop);
-          if(stop == token.c_str()) return true;
-          if(!(count >= 0.) || count > double(body)) return refuse(count);
-          for(double k = 0.; k < count; ++k)
-            if(!next_token(false)) return true;
+          if(p.count.bytes == 1) // CGAL narrows what it read to the count's type
+            value = p.count.is_signed ? double(std::int8_t(int(value))) : double(std::uint8_t(int(value)));
+          if(!(value >= 0.) || value > double(body)) return refuse(value);
+          for(double k = 0.; k < value; ++k) {
+            if(!next_token()) return ends_early();
+            double item_value = 0.;
+            if(!ply_ascii_value(token, p.item, item_value)) return not_a_value();
+          }
           continue;
         }
         if(!p.list) {
-          if(!skip_bytes(std::uintmax_t(p.bytes))) return true;
+          if(!skip_bytes(std::uintmax_t(p.item.bytes))) return ends_early();
           continue;
         }
-        if(left < std::uintmax_t(p.count_bytes)) return true;
+        if(left < std::uintmax_t(p.count.bytes)) return ends_early();
         std::uint64_t bits = 0;
-        for(int k = 0; k < p.count_bytes; ++k, ++at) {
+        for(int k = 0; k < p.count.bytes; ++k, ++at) {
           const std::uint64_t byte = static_cast<unsigned char>(*at);
-          bits |= byte << (8 * (big_endian ? p.count_bytes - 1 - k : k));
+          bits |= byte << (8 * (big_endian ? p.count.bytes - 1 - k : k));
         }
-        left -= std::uintmax_t(p.count_bytes);
-        const bool negative = p.count_signed && (bits >> (8 * p.count_bytes - 1)) != 0;
+        left -= std::uintmax_t(p.count.bytes);
+        const bool negative = p.count.is_signed && (bits >> (8 * p.count.bytes - 1)) != 0;
         if(negative) return refuse(-1.);
-        if(bits > left / std::uint64_t(p.bytes)) return refuse(double(bits));
-        if(!skip_bytes(bits * std::uint64_t(p.bytes))) return true;
+        if(bits > left / std::uint64_t(p.item.bytes)) return refuse(double(bits));
+        skip_bytes(bits * std::uint64_t(p.item.bytes));
       }
   }
   return true;
 }
 
-// A PLY header, then its body's lists (see check_ply_lists()). Read as CGAL reads it: the
+// A PLY header, then its body (see check_ply_body()). Read as CGAL reads it: the
 // signature and the format on the first two lines, whatever they hold, then one keyword a line
 // up to end_header.
 inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error)
@@ -179,17 +221,15 @@ inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error
       if(!(fields >> type >> name))
         continue;
       if(type == "list" && fields >> item_type) {
-        const Ply_type count = ply_type(name);
-        if(!count.integer)
-          continue;
         p.list = true;
-        p.count_bytes = count.bytes;
-        p.count_signed = count.is_signed;
-        p.bytes = ply_type(item_type).bytes;
+        p.count = ply_type(name);
+        p.item = ply_type(item_type);
+        if(!p.count.integer)
+          continue;
       } else if(type != "list") {
-        p.bytes = ply_type(type).bytes;
+        p.item = ply_type(type);
       }
-      if(p.bytes > 0)
+      if(p.item.bytes > 0)
         elements.back().properties.push_back(p);
     }
   }
@@ -209,7 +249,7 @@ inline bool check_ply(std::istream& in, std::uintmax_t bytes, std::string& error
   const std::streamoff header = in.tellg();
   if(header < 0 || std::uintmax_t(header) > bytes)
     return true;
-  return check_ply_lists(in, bytes - std::uintmax_t(header), ascii, big_endian, elements, error);
+  return check_ply_body(in, bytes - std::uintmax_t(header), ascii, big_endian, elements, error);
 }
 
 } // namespace internal

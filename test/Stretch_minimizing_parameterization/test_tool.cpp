@@ -313,6 +313,23 @@ void check_errors()
                 << std::string("\xff\xff\xff\x7f\0\0\0\0", 8);
   }
   check_error("PLY header without end_header", "no_end_header.ply --atlas", "end_header");
+  // CGAL's reader reads on from a failed stream (values it never wrote, list counts among them):
+  // after an ASCII value it cannot read, and past the end of a body shorter than its elements
+  std::ofstream("nan_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                    "end_header\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n";
+  check_error("ASCII PLY value that is not a number", "nan_ascii.ply --atlas", "not a number");
+  std::ofstream("short_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n";
+  check_error("ASCII PLY body shorter than its elements", "short_ascii.ply --atlas", "ends before");
+  {
+    std::ofstream cut("short_binary.ply", std::ios::binary);
+    cut << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+           "property float z\nelement face 2\nproperty list int int vertex_indices\nend_header\n";
+    cut << std::string(36, '\0') << std::string("\x03\0\0\0\0\0\0\0\x01\0\0\0\x02\0\0\0", 16);
+  }
+  check_error("binary PLY body shorter than its elements", "short_binary.ply --atlas", "ends before");
   // found by the fuzz harness: CGAL 5.5.1's PLY reader adds a property to an element that is not there
   std::ofstream("property_first.ply") << "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\n"
                                          "property float y\nend_header\n0 0\n";
