@@ -76,6 +76,29 @@ void check_error(const std::string& what, const std::string& args, const std::st
   SMP_CHECK(lines == 1 && r.err.find(word) != std::string::npos, what << ": stderr was '" << r.err << "'");
 }
 
+// A binary little-endian PLY of the vertices (0, 0, 0), (1, 0, 0), (0, 1, 0), of properties
+// `extra` (header lines) then x, y, z, and one face whose list of ints is `face` (its count then
+// its items, 4 bytes each).
+void write_triangle_ply(const std::string& file, const std::string& extra, const std::string& face)
+{
+  std::ofstream out(file, std::ios::binary);
+  out << "ply\nformat binary_little_endian 1.0\nelement vertex 3\n" << extra
+      << "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+         "property list int int vertex_indices\nend_header\n";
+  const std::string zero(4, '\0'), one("\x00\x00\x80\x3f", 4); // 0.f and 1.f
+  out << zero << zero << zero << one << zero << zero << zero << one << zero << face;
+}
+
+// An ASCII PLY of three vertices x y z, the lines `vertices`, and one element `element` (face,
+// tristrips) of a list of types `list` (count type, item type), the line `item`.
+void write_ascii_triangle_ply(const std::string& file, const std::string& element, const std::string& list,
+                              const std::string& vertices, const std::string& item)
+{
+  std::ofstream(file) << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      << "element " << element << " 1\nproperty list " << list << " vertex_indices\nend_header\n"
+                      << vertices << item;
+}
+
 // Size and spread of the pixel values of a PNG.
 bool png_facts(const std::string& file, int& width, int& height, double& spread)
 {
@@ -281,29 +304,14 @@ void check_errors()
                                            "property float y\nproperty float z\nelement junk -1.5\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
   check_error("PLY element of a negative count", "negative_element.ply --atlas", "announces");
   // a list whose count the file cannot hold: CGAL 5.5.1 resizes the list to it before reading it
-  {
-    std::ofstream big("list_count.ply", std::ios::binary);
-    big << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-           "property float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
-    const std::string zero(4, '\0'), one("\x00\x00\x80\x3f", 4); // 0.f and 1.f, little endian
-    big << zero << zero << zero << one << zero << zero << zero << one << zero;
-    big << std::string("\xff\xff\xff\x7f", 4) << zero << std::string("\x01\0\0\0", 4) << std::string("\x02\0\0\0", 4);
-  }
+  const std::string beyond("\xff\xff\xff\x7f", 4), zero(4, '\0'), one("\x01\0\0\0", 4), two("\x02\0\0\0", 4);
+  write_triangle_ply("list_count.ply", "", beyond + zero + one + two);
   check_error("binary PLY list of a count beyond the file", "list_count.ply --atlas", "list announces");
-  std::ofstream("list_count_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                           "property float z\nelement face 1\nproperty list int int vertex_indices\n"
-                                           "end_header\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n";
+  write_ascii_triangle_ply("list_count_ascii.ply", "face", "int int", "0 0 0\n1 0 0\n0 1 0\n", "-3 0 1 2\n");
   check_error("ASCII PLY list of a negative count", "list_count_ascii.ply --atlas", "list announces");
   // found by the fuzz harness: a property of a type CGAL does not know takes no byte of the body
   // (CGAL skips it), so the list after it starts earlier than its place in the header says
-  {
-    std::ofstream unknown("unknown_type.ply", std::ios::binary);
-    unknown << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float3 w\nproperty float x\n"
-               "property float y\nproperty float z\nelement face 1\nproperty list int int vertex_indices\nend_header\n";
-    const std::string zero(4, '\0'), one("\x00\x00\x80\x3f", 4); // 0.f and 1.f, little endian
-    unknown << zero << zero << zero << one << zero << zero << zero << one << zero;
-    unknown << std::string("\xff\xff\xff\x7f", 4) << zero << std::string("\x01\0\0\0", 4);
-  }
+  write_triangle_ply("unknown_type.ply", "property float3 w\n", beyond + zero + one);
   check_error("binary PLY list after a property of an unknown type", "unknown_type.ply --atlas", "list announces");
   // found by the fuzz harness: with no end_header, CGAL's reader reads the body from the end of
   // the stream, lists of counts it never read (a binary PLY: no byte of it read as a count)
@@ -315,13 +323,9 @@ void check_errors()
   check_error("PLY header without end_header", "no_end_header.ply --atlas", "end_header");
   // CGAL's reader reads on from a failed stream (values it never wrote, list counts among them):
   // after an ASCII value it cannot read, and past the end of a body shorter than its elements
-  std::ofstream("nan_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                    "end_header\n0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n";
+  write_ascii_triangle_ply("nan_ascii.ply", "face", "uchar int", "0 0 0\nnan 0 0\n0 1 0\n", "3 0 1 2\n");
   check_error("ASCII PLY value that is not a number", "nan_ascii.ply --atlas", "not a number");
-  std::ofstream("short_ascii.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                      "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
-                                      "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n";
+  write_ascii_triangle_ply("short_ascii.ply", "face", "uchar int", "0 0 0\n1 0 0\n0 1 0\n", "3 0 1\n");
   check_error("ASCII PLY body shorter than its elements", "short_ascii.ply --atlas", "ends before");
   {
     std::ofstream cut("short_binary.ply", std::ios::binary);
@@ -432,13 +436,9 @@ void check_ply_triangle_strips()
   r = run("strips_le.ply -q --no-pictures -o out_strips_disk"); // a disk: parameterized as one
   SMP_CHECK(r.status == 0, "strips of a disk, without --atlas: " << r.err);
 
-  std::ofstream("strips_bad_index.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                           "property float z\nelement tristrips 1\nproperty list int int vertex_indices\n"
-                                           "end_header\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 7\n";
+  write_ascii_triangle_ply("strips_bad_index.ply", "tristrips", "int int", "0 0 0\n1 0 0\n0 1 0\n", "4 0 1 2 7\n");
   check_error("a strip index out of range", "strips_bad_index.ply --atlas", "out of range");
-  std::ofstream("strips_bytes.ply") << "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
-                                       "property float z\nelement tristrips 1\nproperty list uchar uchar vertex_indices\n"
-                                       "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  write_ascii_triangle_ply("strips_bytes.ply", "tristrips", "uchar uchar", "0 0 0\n1 0 0\n0 1 0\n", "3 0 1 2\n");
   check_error("strips of 8-bit indices", "strips_bytes.ply --atlas", "triangle strips");
 }
 
