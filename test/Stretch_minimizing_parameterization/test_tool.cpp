@@ -327,6 +327,9 @@ void check_errors()
   check_error("ASCII PLY value that is not a number", "nan_ascii.ply --atlas", "not a number");
   write_ascii_triangle_ply("short_ascii.ply", "face", "uchar int", "0 0 0\n1 0 0\n0 1 0\n", "3 0 1\n");
   check_error("ASCII PLY body shorter than its elements", "short_ascii.ply --atlas", "ends before");
+  // a count of a byte type read as a short and narrowed: 200 is -56 items
+  write_ascii_triangle_ply("narrowed_count.ply", "face", "char int", "0 0 0\n1 0 0\n0 1 0\n", "200 0 1 2\n");
+  check_error("ASCII PLY count narrowed to a negative byte", "narrowed_count.ply --atlas", "announces -56");
   {
     std::ofstream cut("short_binary.ply", std::ios::binary);
     cut << "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
