@@ -201,26 +201,12 @@ inline std::vector<std::vector<std::size_t> > stretches_near(const std::vector<V
   return near;
 }
 
-// The shape of a chart that is a bent strip: its border loop (the chart on its left), its two
-// ends (pairs of loop positions, see strip_ends()) and its two sides, each from the first end to
-// the second, taken without their vertices of one triangle (the tip of a triangle that sticks
-// out of the border, which would come out on one line with its neighbours).
-struct Strip_shape
+// Whether `chart` (flattened, with no slit and no polish pending) fills less than 60% of its
+// smallest bounding rectangle, as a bent strip or a band with corners does; then its mean
+// `width` (twice its uv area over its perimeter).
+inline bool sparse_chart(const Chart_map& chart, double& width)
 {
-  std::vector<int> loop;
-  std::array<std::pair<std::size_t, std::size_t>, 2> ends;
-  Polyline_by_length first, second;
-  double end_length = 0.; // the longer end, from its first corner to its last
-  double width = 0.;      // the mean width: the area over half the perimeter
-};
-
-// Whether `chart` (flattened, with no slit and no polish pending) is a bent strip, and its shape
-// into `shape`: it fills less than 60% of its smallest bounding rectangle, and its border is two
-// ends (strip_ends(), looked for in stretches three times its mean width long) and two sides at
-// least four times as long as the ends and of lengths within 30% of each other.
-inline bool bent_strip(const Chart_map& chart, Strip_shape& shape)
-{
-  if(!chart.ok || !chart.slits.empty() || chart.deferred.pending || chart.flat.tri.size() < 2)
+  if(!chart.ok || !chart.slits.empty() || chart.deferred.pending)
     return false;
   const std::vector<Triangle>& tri = chart.flat.tri;
   const std::vector<Vec2>& uv = chart.uv;
@@ -231,17 +217,42 @@ inline bool bent_strip(const Chart_map& chart, Strip_shape& shape)
   const Vec2 extent = align_chart(aligned);
   if(!(area > 0.) || !(area < 0.6 * extent[0] * extent[1]))
     return false;
+  double perimeter = 0.;
+  for(const std::array<int, 2>& side : chart_outline(tri))
+    perimeter += std::hypot(uv[std::size_t(side[1])][0] - uv[std::size_t(side[0])][0],
+                            uv[std::size_t(side[1])][1] - uv[std::size_t(side[0])][1]);
+  width = 2. * area / perimeter;
+  return perimeter > 0.;
+}
+
+// The shape of a chart that is a bent strip: its border loop (the chart on its left), its two
+// ends (pairs of loop positions, see strip_ends()) and its two sides, each from the first end to
+// the second, taken without their vertices of one triangle (the tip of a triangle that sticks
+// out of the border, which would come out on one line with its neighbours).
+struct Strip_shape
+{
+  std::vector<int> loop;
+  std::array<std::pair<std::size_t, std::size_t>, 2> ends;
+  Polyline_by_length first, second;
+  double end_length = 0.; // the longer end, from its first corner to its last
+  double width = 0.;      // the mean width (see sparse_chart())
+};
+
+// Whether `chart` (flattened, with no slit and no polish pending) is a bent strip, and its shape
+// into `shape`: it fills less than 60% of its smallest bounding rectangle, and its border is two
+// ends (strip_ends(), looked for in stretches three times its mean width long) and two sides at
+// least four times as long as the ends and of lengths within 30% of each other.
+inline bool bent_strip(const Chart_map& chart, Strip_shape& shape)
+{
+  if(chart.flat.tri.size() < 2 || !sparse_chart(chart, shape.width))
+    return false;
+  const std::vector<Triangle>& tri = chart.flat.tri;
+  const std::vector<Vec2>& uv = chart.uv;
   shape.loop = border_loop(tri, uv.size());
   const std::vector<int>& loop = shape.loop;
   const std::size_t n = loop.size();
   if(n < 4)
     return false;
-  double perimeter = 0.;
-  for(std::size_t i = 0; i < n; ++i) {
-    const Vec2 &a = uv[std::size_t(loop[i])], &b = uv[std::size_t(loop[(i + 1) % n])];
-    perimeter += std::hypot(b[0] - a[0], b[1] - a[1]);
-  }
-  shape.width = 2. * area / perimeter;
   const double balance = 1.3;
   std::array<std::pair<std::size_t, std::size_t>, 2>& ends = shape.ends;
   if(!strip_ends(loop, uv, 3. * shape.width, balance, ends))
@@ -409,21 +420,11 @@ inline std::vector<double> uv_distances(const std::vector<Triangle>& tri, const 
 // is no such turn.
 inline bool strip_turn_cut(const Chart_map& chart, std::vector<int>& part, int& parts)
 {
-  if(!chart.ok || !chart.slits.empty() || chart.deferred.pending || chart.flat.tri.size() < 8)
+  double width = 0.;
+  if(chart.flat.tri.size() < 8 || !sparse_chart(chart, width))
     return false;
   const std::vector<Triangle>& tri = chart.flat.tri;
   const std::vector<Vec2>& uv = chart.uv;
-  double area = 0., perimeter = 0.;
-  for(const Triangle& t : tri)
-    area += 0.5 * twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]);
-  for(const std::array<int, 2>& side : chart_outline(tri))
-    perimeter += std::hypot(uv[std::size_t(side[1])][0] - uv[std::size_t(side[0])][0],
-                            uv[std::size_t(side[1])][1] - uv[std::size_t(side[0])][1]);
-  std::vector<Vec2> aligned = uv;
-  const Vec2 extent = align_chart(aligned);
-  if(!(area > 0.) || !(area < 0.6 * extent[0] * extent[1]) || !(perimeter > 0.))
-    return false;
-  const double width = 2. * area / perimeter;
   std::vector<double> distance = uv_distances(tri, uv, tri[0][0]);
   const std::size_t far = std::size_t(std::max_element(distance.begin(), distance.end(), [](double a, double b) {
                                         return (std::isfinite(a) ? a : -1.) < (std::isfinite(b) ? b : -1.);
