@@ -397,6 +397,15 @@ int run(int argc, char** argv)
     die(o.input + " is a closed surface: add --atlas for a texture atlas, or --cut to open it along one seam (genus 0 only)");
   if(o.cut && o.charts)
     die("--cut and --charts do not go together: cut the components one at a time");
+  if(!o.charts && !loops.empty()) {
+    // one component with a border: a handle is refused by this package's methods, and CGAL's
+    // fixed-border ones map it without a word (onto a disk, which it is not); V - E + F = 2 - 2g - b
+    const long euler = long(num_vertices(mesh)) - long(num_edges(mesh)) + long(num_faces(mesh));
+    const long genus = (2 - long(loops.size()) - euler) / 2;
+    if(genus > 0)
+      die(o.input + " has a border and " + std::to_string(genus) + (genus == 1 ? " handle" : " handles") +
+          ": add --atlas for a texture atlas (it cuts handles open); one chart needs a disk, with holes or not");
+  }
   if(o.cut) {
     if(!loops.empty())
       die(o.input + " already has a border: --cut is for closed surfaces");
@@ -408,6 +417,14 @@ int run(int argc, char** argv)
   const halfedge_descriptor bhd = PMP::longest_border(mesh).first;
   Chosen_border border;
   border.kind = o.border;
+  // the methods of a fixed border (all but LSCM and ARAP) on a square one
+  const bool square = (o.border == "square" || o.border == "ear-aware") && o.method != "lscm" && o.method != "arap";
+  if(square && !o.charts) {
+    const std::size_t edges = CGAL::halfedges_around_face(bhd, mesh).size();
+    if(edges < 4)
+      die(o.input + ": its border has " + std::to_string(edges) +
+          " edges, and the square border needs 4 corners: add --border circle (or --atlas)");
+  }
   Run run;
   auto progress = [&o, &run](const SMP::Stretch_minimizing_step& s) {
     if(!s.polish)

@@ -76,6 +76,26 @@ void check_error(const std::string& what, const std::string& args, const std::st
   SMP_CHECK(lines == 1 && r.err.find(word) != std::string::npos, what << ": stderr was '" << r.err << "'");
 }
 
+// A torus of 6 x 6 quads, each cut into two triangles, less the two of one quad: one border
+// of four edges, one handle.
+void write_holed_torus(const std::string& file)
+{
+  const int n = 6;
+  std::ofstream out(file);
+  out << "OFF\n" << n * n << " " << 2 * n * n - 2 << " 0\n";
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      const double a = 2. * CGAL_PI * i / n, b = 2. * CGAL_PI * j / n;
+      out << (2. + std::cos(b)) * std::cos(a) << " " << (2. + std::cos(b)) * std::sin(a) << " " << std::sin(b) << "\n";
+    }
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j) {
+      if(i == 0 && j == 0) continue;
+      const int v00 = i * n + j, v10 = ((i + 1) % n) * n + j, v01 = i * n + (j + 1) % n, v11 = ((i + 1) % n) * n + (j + 1) % n;
+      out << "3 " << v00 << " " << v10 << " " << v11 << "\n3 " << v00 << " " << v11 << " " << v01 << "\n";
+    }
+}
+
 // A binary little-endian PLY of the vertices (0, 0, 0), (1, 0, 0), (0, 1, 0), of properties
 // `extra` (header lines) then x, y, z, and one face whose list of ints is `face` (its count then
 // its items, 4 bytes each).
@@ -271,6 +291,18 @@ void check_errors()
   check_error("closed mesh", smp_test::data_file("bear.off"), "--atlas");
   std::ofstream("two.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n";
   check_error("two components", "two.off", "--atlas");
+  // a border of three edges (an octahedron less a face): the square border needs four corners
+  std::ofstream("three_edge_border.off") << "OFF\n6 7 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+                                            "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n";
+  fs::remove_all("out_three_edges");
+  check_error("three-edge border, square", "three_edge_border.off -o out_three_edges", "--border circle");
+  check_error("three-edge border, CGAL's mean value map", "three_edge_border.off -m mvc -o out_three_edges", "--border circle");
+  SMP_CHECK(!fs::exists("out_three_edges"), "an output written for a border the square cannot take");
+  SMP_CHECK(run("three_edge_border.off --border circle -q -o out_three_edges").status == 0,
+            "a three-edge border on a circle is refused");
+  write_holed_torus("holed_torus.off");
+  check_error("a border and a handle", "holed_torus.off", "--atlas");
+  check_error("a border and a handle, CGAL's mean value map", "holed_torus.off -m mvc", "--atlas");
   check_error("eta out of range", smp_test::data_file("nefertiti.off") + " --eta 2", "eta");
   check_error("iterations not a number", smp_test::data_file("nefertiti.off") + " --iterations many", "iterations");
   check_error("threads not a whole number", smp_test::data_file("nefertiti.off") + " --threads 1.5", "threads");
