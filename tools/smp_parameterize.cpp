@@ -237,7 +237,8 @@ void run_parameterizer(Mesh& mesh, halfedge_descriptor bhd, Parameterizer p, UV_
     run.charts = out.size();
     for(std::size_t c = 0; c < out.size(); ++c)
       if(out[c].status != SMP::OK && run.message.empty())
-        run.message = "component " + std::to_string(c) + ": " + SMP::error_message(out[c].status);
+        run.message = "component " + std::to_string(c) + ": " + SMP::error_message(out[c].status) +
+                      (out[c].status == SMP::ERROR_BORDER_TOO_SHORT ? " (a square needs 4 corners): add --border circle" : "");
   } else {
     run.status = SMP::parameterize(mesh, p, bhd, uv);
   }
@@ -470,7 +471,9 @@ int run(int argc, char** argv)
   const double parameterize_seconds = seconds_since(t0);
   if(run.status != SMP::OK && !(o.charts && run.charts > 0 && run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)) {
     std::string why = run.message.empty() ? border.why : run.message;
-    die(std::string("parameterization failed: ") + SMP::error_message(run.status) + (why.empty() ? "" : ": " + why));
+    // a component's message says its error itself
+    const bool component = o.charts && why.compare(0, 10, "component ") == 0;
+    die(std::string("parameterization failed: ") + (component ? why : SMP::error_message(run.status) + (why.empty() ? "" : ": " + why)));
   }
 
   // ---- measure (the faces of the parameterized charts)

@@ -300,6 +300,13 @@ void check_errors()
   SMP_CHECK(!fs::exists("out_three_edges"), "an output written for a border the square cannot take");
   SMP_CHECK(run("three_edge_border.off --border circle -q -o out_three_edges").status == 0,
             "a three-edge border on a circle is refused");
+  // the same with --charts: a component of a three-edge border beside one of a square
+  std::ofstream("three_edge_component.off")
+    << "OFF\n10 9 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n5 0 0\n6 0 0\n6 1 0\n5 1 0\n"
+       "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 6 7 8\n3 6 8 9\n";
+  check_error("three-edge border of a component", "three_edge_component.off --charts", "--border circle");
+  SMP_CHECK(run("three_edge_component.off --charts --border circle -q -o out_three_edges").status == 0,
+            "components, one of a three-edge border, on circles are refused");
   write_holed_torus("holed_torus.off");
   check_error("a border and a handle", "holed_torus.off", "--atlas");
   check_error("a border and a handle, CGAL's mean value map", "holed_torus.off -m mvc", "--atlas");
