@@ -219,8 +219,12 @@ struct Run
   std::vector<SMP::Stretch_minimizing_step> history;
   std::size_t kept_step = 0;
   std::size_t charts = 1;
+  bool border_too_short = false; // of the component of `message` (--charts)
   SMP::Stretch_minimizing_polish polish;
 };
+
+// What a border too short for the square's corners is told to do.
+const char* const square_border_hint = "the square border needs 4 corners: add --border circle";
 
 double seconds_since(std::chrono::steady_clock::time_point t)
 {
@@ -236,9 +240,10 @@ void run_parameterizer(Mesh& mesh, halfedge_descriptor bhd, Parameterizer p, UV_
     run.status = SMP::parameterize_components(mesh, p, uv, &out);
     run.charts = out.size();
     for(std::size_t c = 0; c < out.size(); ++c)
-      if(out[c].status != SMP::OK && run.message.empty())
-        run.message = "component " + std::to_string(c) + ": " + SMP::error_message(out[c].status) +
-                      (out[c].status == SMP::ERROR_BORDER_TOO_SHORT ? " (a square needs 4 corners): add --border circle" : "");
+      if(out[c].status != SMP::OK && run.message.empty()) {
+        run.message = "component " + std::to_string(c) + ": " + SMP::error_message(out[c].status);
+        run.border_too_short = out[c].status == SMP::ERROR_BORDER_TOO_SHORT;
+      }
   } else {
     run.status = SMP::parameterize(mesh, p, bhd, uv);
   }
@@ -423,8 +428,7 @@ int run(int argc, char** argv)
   if(square && !o.charts) {
     const std::size_t edges = CGAL::halfedges_around_face(bhd, mesh).size();
     if(edges < 4)
-      die(o.input + ": its border has " + std::to_string(edges) +
-          " edges, and the square border needs 4 corners: add --border circle (or --atlas)");
+      die(o.input + ": its border has " + std::to_string(edges) + " edges, and " + square_border_hint + " (or --atlas)");
   }
   Run run;
   auto progress = [&o, &run](const SMP::Stretch_minimizing_step& s) {
@@ -472,8 +476,9 @@ int run(int argc, char** argv)
   if(run.status != SMP::OK && !(o.charts && run.charts > 0 && run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)) {
     std::string why = run.message.empty() ? border.why : run.message;
     // a component's message says its error itself
-    const bool component = o.charts && why.compare(0, 10, "component ") == 0;
-    die(std::string("parameterization failed: ") + (component ? why : SMP::error_message(run.status) + (why.empty() ? "" : ": " + why)));
+    if(o.charts && why.compare(0, 10, "component ") == 0)
+      die("parameterization failed: " + why + (square && run.border_too_short ? std::string(": ") + square_border_hint : ""));
+    die(std::string("parameterization failed: ") + SMP::error_message(run.status) + (why.empty() ? "" : ": " + why));
   }
 
   // ---- measure (the faces of the parameterized charts)
