@@ -220,6 +220,7 @@ struct Run
   std::size_t kept_step = 0;
   std::size_t charts = 1;
   bool border_too_short = false; // of the component of `message` (--charts)
+  std::size_t unmapped = 0;       // components left without a map (--charts)
   SMP::Stretch_minimizing_polish polish;
 };
 
@@ -239,11 +240,15 @@ void run_parameterizer(Mesh& mesh, halfedge_descriptor bhd, Parameterizer p, UV_
     std::vector<SMP::Chart> out;
     run.status = SMP::parameterize_components(mesh, p, uv, &out);
     run.charts = out.size();
-    for(std::size_t c = 0; c < out.size(); ++c)
-      if(out[c].status != SMP::OK && run.message.empty()) {
+    for(std::size_t c = 0; c < out.size(); ++c) {
+      if(out[c].status == SMP::OK)
+        continue;
+      ++run.unmapped;
+      if(run.message.empty()) {
         run.message = "component " + std::to_string(c) + ": " + SMP::error_message(out[c].status);
         run.border_too_short = out[c].status == SMP::ERROR_BORDER_TOO_SHORT;
       }
+    }
   } else {
     run.status = SMP::parameterize(mesh, p, bhd, uv);
   }
@@ -480,6 +485,9 @@ int run(int argc, char** argv)
       die("parameterization failed: " + why + (square && run.border_too_short ? std::string(": ") + square_border_hint : ""));
     die(std::string("parameterization failed: ") + SMP::error_message(run.status) + (why.empty() ? "" : ": " + why));
   }
+  if(run.unmapped > 0) // the closed ones, which --charts leaves: said even with -q
+    std::cerr << "smp-parameterize: warning: " << run.unmapped << " of " << run.charts << " components not mapped ("
+              << run.message << "): their faces keep uv (0, 0); --atlas maps every component" << std::endl;
 
   // ---- measure (the faces of the parameterized charts)
   const auto t1 = std::chrono::steady_clock::now();
@@ -547,7 +555,7 @@ int run(int argc, char** argv)
   report["input"] = o.input;
   report["mesh"] = {{"vertices", input_vertices}, {"faces", input_faces}, {"isolated_vertices_removed", isolated},
                     {"boundaries", loops.size()},
-                    {"components", components}, {"cut_open", o.cut}};
+                    {"components", components}, {"components_not_mapped", run.unmapped}, {"cut_open", o.cut}};
   report["method"] = o.method;
   report["options"] = {{"border", o.border}, {"preset", o.preset}, {"start", o.start}, {"update", o.update},
                        {"rule", o.rule}, {"eta", o.eta}, {"iterations", o.iterations}, {"descent", o.descent},

@@ -517,6 +517,24 @@ void check_isolated_vertex()
     SMP_CHECK(entry.path().extension() != ".part", entry.path() << " left behind");
 }
 
+// --charts on a closed tetrahedron beside a disk: the disk is mapped, the tetrahedron cannot be
+// (no border to fix), and that is said, on stderr and in the report, with what maps it.
+void check_unmapped_component()
+{
+  std::ofstream("closed_and_disk.off") << "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n5 0 0\n6 0 0\n6 1 0\n5 1 0\n"
+                                          "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n3 4 5 6\n3 4 6 7\n";
+  const Result r = run("closed_and_disk.off --charts -q --no-pictures -o out_closed_and_disk");
+  SMP_CHECK(r.status == 0 && r.err.find("1 of 2 components") != std::string::npos &&
+            r.err.find("--atlas") != std::string::npos, r.status << ": '" << r.err << "'");
+  boost::property_tree::ptree json;
+  try {
+    boost::property_tree::read_json("out_closed_and_disk/report.json", json);
+    SMP_CHECK(json.get<std::size_t>("mesh.components_not_mapped") == 1, "unmapped component in the report");
+  } catch(const std::exception& e) {
+    SMP_CHECK(false, "report.json: " << e.what());
+  }
+}
+
 // --atlas on what the disk path refuses (quads, a closed mesh, two parts): the OBJ keeps the
 // input's vertices and faces in order, a vt per corner in the unit square, and report.json
 // agrees with it.
@@ -726,6 +744,7 @@ int main()
 {
   check_plain_off();
   check_outputs();
+  check_unmapped_component();
   check_errors();
   check_obj_continued_lines();
   check_ply_triangle_strips();
