@@ -478,11 +478,15 @@ int run(int argc, char** argv)
     run_parameterizer(mesh, bhd, SMP::ARAP_parameterizer_3<Mesh>(), uv, o.charts, run);
   }
   const double parameterize_seconds = seconds_since(t0);
-  if(run.status != SMP::OK && !(o.charts && run.charts > 0 && run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)) {
+  // --charts leaves the components that are no disk, as long as one is mapped
+  const bool some_mapped = o.charts && run.unmapped < run.charts;
+  if(run.status != SMP::OK && !(some_mapped && run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)) {
     std::string why = run.message.empty() ? border.why : run.message;
     // a component's message says its error itself
     if(o.charts && why.compare(0, 10, "component ") == 0)
-      die("parameterization failed: " + why + (square && run.border_too_short ? std::string(": ") + square_border_hint : ""));
+      die("parameterization failed: " + why +
+          (square && run.border_too_short ? std::string(": ") + square_border_hint
+           : run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC ? ": no component is a disk: --atlas maps any" : ""));
     die(std::string("parameterization failed: ") + SMP::error_message(run.status) + (why.empty() ? "" : ": " + why));
   }
   if(run.unmapped > 0) // the closed ones, which --charts leaves: said even with -q

@@ -310,6 +310,7 @@ void check_errors()
   write_holed_torus("holed_torus.off");
   check_error("a border and a handle", "holed_torus.off", "--atlas");
   check_error("a border and a handle, CGAL's mean value map", "holed_torus.off -m mvc", "--atlas");
+  check_error("a border and a handle, the only component of --charts", "holed_torus.off --charts", "--atlas");
   check_error("eta out of range", smp_test::data_file("nefertiti.off") + " --eta 2", "eta");
   check_error("iterations not a number", smp_test::data_file("nefertiti.off") + " --iterations many", "iterations");
   check_error("threads not a whole number", smp_test::data_file("nefertiti.off") + " --threads 1.5", "threads");
