@@ -489,7 +489,7 @@ int run(int argc, char** argv)
            : run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC ? ": no component is a disk: --atlas maps any" : ""));
     die(std::string("parameterization failed: ") + SMP::error_message(run.status) + (why.empty() ? "" : ": " + why));
   }
-  if(run.unmapped > 0) // the closed ones, which --charts leaves: said even with -q
+  if(run.unmapped > 0) // the components that are no disk, left by --charts: said even with -q
     std::cerr << "smp-parameterize: warning: " << run.unmapped << " of " << run.charts << " components not mapped ("
               << run.message << "): their faces keep uv (0, 0); --atlas maps every component" << std::endl;
 
