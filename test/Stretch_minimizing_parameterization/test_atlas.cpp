@@ -580,6 +580,41 @@ void chart_orientation()
   SMP_CHECK(chart.ok && area > 0., "chart of a flat face: ok " << chart.ok << ", twice the area of the other " << area);
 }
 
+// The outline test of the packed charts (outline_is_simple()): a chart whose border crosses
+// itself or runs along itself is found, with exact predicates; what only touches at a point is not. Found on
+// trimesh's featuretype.STL with --max-stretch 1.001: a wall triangle and the floor meet at a
+// vertex, a border edge of each running from it along one line on either side, and the
+// packing's rounding put a floor vertex 1e-16 inside the wall triangle.
+void outline_touching()
+{
+  typedef std::array<int, 2> E;
+  using SMP::internal::outline_is_simple;
+  // a square, counterclockwise
+  const std::vector<SMP::internal::Vec2> square = {{0., 0.}, {1., 0.}, {1., 1.}, {0., 1.}};
+  SMP_CHECK(outline_is_simple(square, {E{0, 1}, E{1, 2}, E{2, 3}, E{3, 0}}), "a square's outline is not simple");
+  // two triangles meeting at vertex 0 only (a bowtie): allowed, the grader counts no overlap
+  const std::vector<SMP::internal::Vec2> bowtie = {{0., 0.}, {1., 1.}, {-1., 1.}, {1., -1.}, {-1., -1.}};
+  SMP_CHECK(outline_is_simple(bowtie, {E{0, 1}, E{1, 2}, E{2, 0}, E{0, 4}, E{4, 3}, E{3, 0}}),
+            "a bowtie's outline is not simple");
+  // the case found: the border edges (0, 1) and (0, 2) run from vertex 0 along one line, the
+  // wall triangle (0, 1, 3) below it, the floor (0, 4, 2) above
+  const std::vector<SMP::internal::Vec2> folded = {{1., 0.}, {0., 0.}, {0.7, 0.}, {0., -0.1}, {1., 1.}};
+  SMP_CHECK(!outline_is_simple(folded, {E{1, 3}, E{3, 0}, E{0, 1}, E{0, 4}, E{4, 2}, E{2, 0}}),
+            "two border edges along each other are not found");
+  // the floor's vertex 1e-16 inside the wall: its edges cross the wall's edge, sharing no vertex
+  std::vector<SMP::internal::Vec2> pushed = folded;
+  pushed[2][1] = -1e-16;
+  SMP_CHECK(!outline_is_simple(pushed, {E{1, 3}, E{3, 0}, E{0, 1}, E{0, 4}, E{4, 2}, E{2, 0}}),
+            "a vertex pushed across a border edge is not found");
+  // two corners at one place, of different vertices (the ends of a cut): they touch, no more
+  const std::vector<SMP::internal::Vec2> corners = {{0., 0.}, {1., 0.}, {0., 1.}, {0., 0.}, {-1., 0.}, {0., -1.}};
+  SMP_CHECK(outline_is_simple(corners, {E{0, 1}, E{1, 2}, E{2, 0}, E{3, 4}, E{4, 5}, E{5, 3}}),
+            "two corners touching at a point are taken for an overlap");
+  // a straight border through a vertex (edges from it in opposite directions) is simple
+  SMP_CHECK(outline_is_simple({{0., 0.}, {1., 0.}, {2., 0.}, {1., 1.}}, {E{0, 1}, E{1, 2}, E{2, 3}, E{3, 0}}),
+            "a straight border is not simple");
+}
+
 // Found by a random search of the fuzz harness's soups: a quad with a corner a billion units
 // away, whose map without a polish squashed a triangle to about the rounding of the packing
 // (a uv area of 1e-19 in the unit square), which then came out flipped. The packed atlas is
@@ -2048,6 +2083,7 @@ int run_test(int argc, char** argv)
   chart_of_two_pieces();
   chart_orientation();
   packing_rounding();
+  outline_touching();
   needle_alone();
   needles_stacked();
   packing_frame_first();

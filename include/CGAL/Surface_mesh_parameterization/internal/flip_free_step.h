@@ -5,7 +5,8 @@
 #define CGAL_SMP_INTERNAL_FLIP_FREE_STEP_H
 
 // What keeps a step of the polish a bijection: how far a positive triangle can move along a
-// direction before it folds, and whether a moved border loop is still a simple polygon.
+// direction before it folds, and whether a moved border loop is still a simple polygon; and
+// whether a chart's outline keeps its triangles apart.
 
 #include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
 
@@ -88,6 +89,43 @@ private:
   typedef Box_intersection_d::Box_with_handle_d<double, 2, const int*, Box_intersection_d::ID_FROM_HANDLE> Box;
   std::vector<Box> m_boxes, m_boxes_copy;
 };
+
+// Whether the outline of a flat chart (its border edges, `outline`, indices into `points`, in
+// any order) keeps the chart's triangles apart: no two of its edges cross, or run along each
+// other for a length unless they are at the same place (the two sides of a slit); touching at
+// a point is allowed (two corners of a cut at one place). Two triangles of a flip-free chart
+// overlap only where its outline does so. Exact predicates.
+inline bool outline_is_simple(const std::vector<Vec2>& points, const std::vector<std::array<int, 2> >& outline)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef Box_intersection_d::Box_with_handle_d<double, 2, const std::array<int, 2>*, Box_intersection_d::ID_FROM_HANDLE> Box;
+  auto point = [&points](int v) { return K::Point_2(points[std::size_t(v)][0], points[std::size_t(v)][1]); };
+  // segments ab and cd cross at a point inside both, or overlap along a length
+  auto meet = [](const K::Point_2& a, const K::Point_2& b, const K::Point_2& c, const K::Point_2& d) {
+    const CGAL::Orientation oc = CGAL::orientation(a, b, c), od = CGAL::orientation(a, b, d);
+    if(oc != CGAL::COLLINEAR || od != CGAL::COLLINEAR)
+      return oc * od < 0 && CGAL::orientation(c, d, a) * CGAL::orientation(c, d, b) < 0;
+    // on one line: the two intervals share more than a point
+    const bool x = a.x() != b.x();
+    const double a1 = x ? a.x() : a.y(), b1 = x ? b.x() : b.y(), c1 = x ? c.x() : c.y(), d1 = x ? d.x() : d.y();
+    return (std::min)((std::max)(a1, b1), (std::max)(c1, d1)) > (std::max)((std::min)(a1, b1), (std::min)(c1, d1));
+  };
+  std::vector<Box> boxes;
+  boxes.reserve(outline.size());
+  for(const std::array<int, 2>& e : outline)
+    boxes.emplace_back(point(e[0]).bbox() + point(e[1]).bbox(), &e);
+  bool simple = true;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& x, const Box& y) {
+    const std::array<int, 2>& e = *x.handle();
+    const std::array<int, 2>& f = *y.handle();
+    const K::Point_2 a = point(e[0]), b = point(e[1]), c = point(f[0]), d = point(f[1]);
+    // one edge twice, or the two sides of a slit, at the same place
+    const bool same = (a == d && b == c) || (a == c && b == d);
+    if(simple && !same && meet(a, b, c, d))
+      simple = false;
+  });
+  return simple;
+}
 
 } // namespace internal
 } // namespace Surface_mesh_parameterization

@@ -20,6 +20,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_partition.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Chart_parameterization.h>
 #include <CGAL/Surface_mesh_parameterization/internal/atlas/Strip_straightening.h>
+#include <CGAL/Surface_mesh_parameterization/internal/flip_free_step.h>
 #include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
 #include <CGAL/Surface_mesh_parameterization/internal/wall_clock.h>
 #include <CGAL/Surface_mesh_parameterization/stretch_minimizing_named_parameters.h>
@@ -624,8 +625,18 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // chart is taken as one that could not be flattened (grown again smaller, or, if it is one
   // polygon, its triangles laid out alone: those keep their orientation), and all are packed again.
   // (A bound on the passes all the same: each takes the flipped charts further apart.)
+  // Likewise a chart whose border crosses or runs along itself once packed (a map within the
+  // bound that closes the angle at a border vertex to the last digit: the packing's rounding
+  // can push one side into the other).
   std::vector<std::size_t> flipped;
-  Flat_stretch_summary measured = measure_packed_charts(charts, kept, uv, flipped);
+  auto measure_packed = [&]() {
+    Flat_stretch_summary s = measure_packed_charts(charts, kept, uv, flipped);
+    for(std::size_t i = 0; i < kept.size(); ++i)
+      if(flipped[i] == 0 && !outline_is_simple(uv[i], chart_outline(chart_triangles[i])))
+        flipped[i] = 1;
+    return s;
+  };
+  Flat_stretch_summary measured = measure_packed();
   auto any_flipped = [&flipped]() { return std::any_of(flipped.begin(), flipped.end(), [](std::size_t f) { return f > 0; }); };
   for(int pass = 0; pass < 64 && any_flipped(); ++pass) {
     const std::size_t before = charts.size();
@@ -638,7 +649,7 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
     straighten(before);
     gather();
     packed = pack_charts(uv, chart_triangles, area_uv, area_3d, settings.packing, scale_hint);
-    measured = measure_packed_charts(charts, kept, uv, flipped);
+    measured = measure_packed();
   }
   settings.tell(Atlas_stage::PACKING, std::size_t(round) + 1, std::size_t(round) + 1);
   r.utilization = packed.utilization;
