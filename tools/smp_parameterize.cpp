@@ -482,8 +482,8 @@ int run(int argc, char** argv)
   const bool some_mapped = o.charts && run.unmapped < run.charts;
   if(run.status != SMP::OK && !(some_mapped && run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC)) {
     std::string why = run.message.empty() ? border.why : run.message;
-    // a component's message says its error itself
-    if(o.charts && why.compare(0, 10, "component ") == 0)
+    // a component's message (run_parameterizer()) says its error itself
+    if(run.unmapped > 0)
       die("parameterization failed: " + why +
           (square && run.border_too_short ? std::string(": ") + square_border_hint
            : run.status == SMP::ERROR_NO_TOPOLOGICAL_DISC ? ": no component is a disk: --atlas maps any" : ""));

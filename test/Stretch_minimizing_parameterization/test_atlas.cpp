@@ -581,10 +581,10 @@ void chart_orientation()
 }
 
 // The outline test of the packed charts (outline_is_simple()): a chart whose border crosses
-// itself or runs along itself is found, with exact predicates; what only touches at a point is not. Found on
-// trimesh's featuretype.STL with --max-stretch 1.001: a wall triangle and the floor meet at a
-// vertex, a border edge of each running from it along one line on either side, and the
-// packing's rounding put a floor vertex 1e-16 inside the wall triangle.
+// itself or runs along itself is found, with exact predicates; what only touches at a point is
+// not. Found on trimesh's featuretype.STL with --max-stretch 1.001: a wall triangle and the
+// floor meet at a vertex, a border edge of each running from it along one line on either side,
+// and the packing's rounding put a floor vertex 1e-16 inside the wall triangle.
 void outline_touching()
 {
   typedef std::array<int, 2> E;

@@ -292,8 +292,9 @@ void check_errors()
   std::ofstream("two.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n";
   check_error("two components", "two.off", "--atlas");
   // a border of three edges (an octahedron less a face): the square border needs four corners
-  std::ofstream("three_edge_border.off") << "OFF\n6 7 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
-                                            "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n";
+  const std::string octahedron_points = "1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n",
+                    octahedron_faces = "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n";
+  std::ofstream("three_edge_border.off") << "OFF\n6 7 0\n" << octahedron_points << octahedron_faces;
   fs::remove_all("out_three_edges");
   check_error("three-edge border, square", "three_edge_border.off -o out_three_edges", "--border circle");
   check_error("three-edge border, CGAL's mean value map", "three_edge_border.off -m mvc -o out_three_edges", "--border circle");
@@ -301,9 +302,8 @@ void check_errors()
   SMP_CHECK(run("three_edge_border.off --border circle -q -o out_three_edges").status == 0,
             "a three-edge border on a circle is refused");
   // the same with --charts: a component of a three-edge border beside one of a square
-  std::ofstream("three_edge_component.off")
-    << "OFF\n10 9 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n5 0 0\n6 0 0\n6 1 0\n5 1 0\n"
-       "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 6 7 8\n3 6 8 9\n";
+  std::ofstream("three_edge_component.off") << "OFF\n10 9 0\n" << octahedron_points << "5 0 0\n6 0 0\n6 1 0\n5 1 0\n"
+                                             << octahedron_faces << "3 6 7 8\n3 6 8 9\n";
   check_error("three-edge border of a component", "three_edge_component.off --charts", "--border circle");
   SMP_CHECK(run("three_edge_component.off --charts --border circle -q -o out_three_edges").status == 0,
             "components, one of a three-edge border, on circles are refused");
