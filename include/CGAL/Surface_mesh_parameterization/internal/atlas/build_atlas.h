@@ -182,9 +182,11 @@ inline double cut_position(const std::vector<double>& along, const Flat_triangle
 }
 
 // The packed charts (`uv`, one per chart of `kept`) measured as one map, a triangle of each
-// chart's in turn; `flipped` receives, per chart, its triangles oriented against the input.
+// chart's in turn; `flipped` receives, per chart, its triangles oriented against the input, and
+// `measured`, its triangles with an area to speak of (in 3D and in uv).
 inline Flat_stretch_summary measure_packed_charts(const std::vector<Chart_map>& charts, const std::vector<std::size_t>& kept,
-                                                  const std::vector<std::vector<Vec2> >& uv, std::vector<std::size_t>& flipped)
+                                                  const std::vector<std::vector<Vec2> >& uv, std::vector<std::size_t>& flipped,
+                                                  std::vector<std::size_t>& measured)
 {
   Flat_triangles all;
   std::vector<Vec2> all_uv;
@@ -206,9 +208,13 @@ inline Flat_stretch_summary measure_packed_charts(const std::vector<Chart_map>& 
   // every chart is laid out counterclockwise: a face of negative uv area is flipped, unless it
   // has no area to speak of, in 3D or in uv (the package's measure leaves those out, as here)
   flipped.assign(kept.size(), 0);
+  measured.assign(kept.size(), 0);
   for(std::size_t t = 0; t < all.tri.size(); ++t)
-    if(measure.used(t) && measure.faces()[t].area_uv < 0.)
-      ++flipped[chart_of[t]];
+    if(measure.used(t)) {
+      ++measured[chart_of[t]];
+      if(measure.faces()[t].area_uv < 0.)
+        ++flipped[chart_of[t]];
+    }
   return s;
 }
 
@@ -627,12 +633,13 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // (A bound on the passes all the same: each takes the flipped charts further apart.)
   // Likewise a chart whose border crosses or runs along itself once packed (a map within the
   // bound that closes the angle at a border vertex to the last digit: the packing's rounding
-  // can push one side into the other).
-  std::vector<std::size_t> flipped;
+  // can push one side into the other). Not a chart without an area to speak of (a speck of a
+  // mesh far larger, whose triangles the rounding lays on a line): it covers nothing.
+  std::vector<std::size_t> flipped, measured_faces;
   auto measure_packed = [&]() {
-    Flat_stretch_summary s = measure_packed_charts(charts, kept, uv, flipped);
+    Flat_stretch_summary s = measure_packed_charts(charts, kept, uv, flipped, measured_faces);
     for(std::size_t i = 0; i < kept.size(); ++i)
-      if(flipped[i] == 0 && !outline_is_simple(uv[i], chart_outline(chart_triangles[i])))
+      if(flipped[i] == 0 && measured_faces[i] > 0 && !outline_is_simple(uv[i], chart_outline(chart_triangles[i])))
         flipped[i] = 1;
     return s;
   };
