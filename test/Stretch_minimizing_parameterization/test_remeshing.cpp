@@ -3,9 +3,10 @@
 //
 // remesh_with_parameterizations(): the new mesh is a valid oriented triangle mesh on the input
 // surface with the input's border loops, about the number of vertices asked for, on analytic
-// cases (a planar disk, a cylinder patch) and the bundled meshes; the relaxation evens the surface
-// areas where the domain is squeezed, and the raster's resolution follows the squeeze of U'';
-// {U^0, U^opt} samples more evenly than {U^0}; bad input gets an error and leaves the output alone.
+// cases (a planar disk, a cylinder patch: their triangles along the border as even as the
+// others) and the bundled meshes; the relaxation evens the surface areas where the domain is
+// squeezed, and the raster's resolution follows the squeeze of U''; {U^0, U^opt} samples more
+// evenly than {U^0}; bad input gets an error and leaves the output alone.
 
 #include "smp_test_util.h"
 #include "smp_test_mesh.h"
@@ -139,6 +140,27 @@ Mesh planar_disk(int rings, int sectors)
   return m;
 }
 
+// The triangles of `m` with a corner on the border: their mean area over that of the others,
+// and the coefficient of variation of their areas.
+std::pair<double, double> border_band_areas(const Mesh& m)
+{
+  std::vector<double> band;
+  double others = 0.;
+  std::size_t n = 0;
+  for(auto f : m.faces()) {
+    bool on_border = false;
+    for(auto v : vertices_around_face(m.halfedge(f), m))
+      on_border = on_border || m.is_border(v);
+    const double a = PMP::face_area(f, m);
+    if(on_border) band.push_back(a);
+    else { others += a; ++n; }
+  }
+  double mean = 0., spread = 0.;
+  for(double a : band) mean += a / double(band.size());
+  for(double a : band) spread += CGAL::square(a - mean) / double(band.size());
+  return {mean / (others / double(n)), std::sqrt(spread) / mean};
+}
+
 Mesh half_cylinder(int nu, int nv)
 {
   smp_test::Grid g = smp_test::make_grid(nu, nv);
@@ -167,6 +189,10 @@ void analytic_cases()
     // a plane is mapped without distortion: the samples are even and the angles wide
     SMP_CHECK(r.angles_at_least_30 >= 0.95 && r.area_variation < 0.3,
               "planar disk: " << r.angles_at_least_30 << " of the angles >= 30 degrees, area variation " << r.area_variation);
+    // and the triangles along the border as even as the others (the row inside the border)
+    const std::pair<double, double> band = border_band_areas(out);
+    SMP_CHECK(band.first > 0.85 && band.first < 1.15 && band.second < 0.22,
+              "planar disk: the triangles along the border " << band.first << " times the others' mean area, variation " << band.second);
   }
   const Mesh cylinder = half_cylinder(40, 16);
   Mesh out;
@@ -177,6 +203,9 @@ void analytic_cases()
     off = (std::max)(off, 1. - std::hypot(out.point(v).x(), out.point(v).y()));
   // inside the cylinder by at most the sagitta of the input's chords
   SMP_CHECK(off >= -1e-12 && off <= 1. - std::cos(CGAL_PI / 80.) + 1e-12, "half cylinder: " << off << " inside");
+  const std::pair<double, double> band = border_band_areas(out);
+  SMP_CHECK(band.first > 0.85 && band.first < 1.15 && band.second < 0.22,
+            "half cylinder: the triangles along the border " << band.first << " times the others' mean area, variation " << band.second);
 }
 
 // The relaxation on a plane whose domain is squeezed along x (u = x^2, v = y): the vertices of a
@@ -283,6 +312,17 @@ void bundled_meshes()
     const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(head, 5000, out,
         SMP::parameters::parameterization_pair(SMP::Remeshing_pair::U0));
     check_remeshed(head, out, r, 5000, "mannequin-devil.off, {U0}, 5000 vertices");
+  }
+  {
+    // a small count, where the samples left out along the border are many: the density is not
+    // proportional to the count, and the rounds scaling it by the count's ratio overshot (59
+    // vertices for 100)
+    const Mesh peaks = smp_test::read_mesh("three_peaks.off");
+    for(std::size_t n : {100, 200}) {
+      Mesh out;
+      const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(peaks, n, out);
+      check_remeshed(peaks, out, r, n, "three_peaks.off, " + std::to_string(n) + " vertices");
+    }
   }
   SMP_CHECK(variation[2] < variation[0] && hausdorff[2] <= 1.05 * hausdorff[0],
             "mannequin-devil.off: area variation " << variation[2] << " with {U0, Uopt}, " << variation[0]

@@ -44,7 +44,9 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// on the density, and the more evenly the surface is sampled. The manual's section on
 /// remeshing gives the stages and what they guarantee.
 ///
-/// Each border loop of the input is kept: the new border vertices are on it, evenly spaced.
+/// Each border loop of the input is kept: the new border vertices are on it, evenly spaced,
+/// and a first row of vertices runs along it inside, so that the triangles along the border
+/// are as even as the others.
 /// The new mesh has the input's orientation and about `number_of_vertices` vertices (within a
 /// few in a thousand, unless the border loops alone take more).
 ///

@@ -14,6 +14,7 @@
 #include <CGAL/Surface_mesh_parameterization/Stretch_minimizing_parameterizer_3.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Border_row.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Border_sampling.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Density_sampling.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_locator.h>
@@ -225,40 +226,62 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     r.message = "the sampling parameterization covers no area";
     return false;
   }
-  // The count asked for is met once the samples the triangulation leaves out are known: the
-  // ones too close to the border in 3D (closer than half the spacing, where they would make
-  // thin triangles with it), and the ones beyond the border chords in U'. Where the lifted
-  // mesh intersects itself or folds (where U' is so compressed that the order of the samples
-  // in it is lost to rounding), the samples of those triangles are taken out, and no sample
-  // is taken again from the input triangles they were in.
   double orientation = 0.;
   for(const Triangle& t : m.tri)
     orientation += twice_signed_area(in.triangulation_uv[std::size_t(t[0])], in.triangulation_uv[std::size_t(t[1])],
                                      in.triangulation_uv[std::size_t(t[2])]);
+  const Domain_locator locator(m.tri, in.triangulation_uv);
+  // the first row inside the borders (apexes closer than half the spacing merged), unless it
+  // would take more than half the interior vertices (a strip narrower than two rows)
+  std::vector<K::Point_3> row_xyz;
+  std::vector<Surface_location> row =
+      border_row(m, in.triangulation_uv, locator, on_border, loops, orientation < 0. ? -1. : 1., 0.5 * spacing,
+                 [&](const K::Point_3& p) { return tree.squared_distance(p) >= band2; }, row_xyz);
+  if(2 * row.size() > wanted) {
+    row.clear();
+    row_xyz.clear();
+  }
+  const Nearby_points near_row(std::move(row_xyz));
+  // The count asked for is met once the samples the triangulation leaves out are known: the
+  // ones too close to the border in 3D (closer than half the spacing, where they would make
+  // thin triangles with it) or to the border row (closer than 0.6 times the spacing, where
+  // equilateral triangles put the next row at 0.87), and the ones beyond the border chords in
+  // U'. Where the lifted
+  // mesh intersects itself or folds (where U' is so compressed that the order of the samples
+  // in it is lost to rounding), the samples of those triangles are taken out, and no sample
+  // is taken again from the input triangles they were in.
   const std::size_t b = on_border.size();
   std::vector<Surface_location> inside;
   std::vector<char> excluded(m.tri.size(), 0);
-  const Domain_locator locator(m.tri, in.triangulation_uv);
   double domain_size = 0.; // for a tolerance
   for(const Vec2& q : in.triangulation_uv)
     domain_size = (std::max)({domain_size, std::abs(q[0]), std::abs(q[1])});
   std::vector<Vec2> points, uv;
   Lifted_mesh mesh;
-  double per_area = double(wanted) / raster.total_area;
+  const std::size_t wanted_drawn = wanted - row.size();
+  double per_area = double(wanted_drawn) / raster.total_area;
   r.seconds_sampling = seconds_since(t0);
-  // the round whose count is nearest the one asked for: where U' is so compressed that samples
-  // fall together there (and the triangulation keeps one), the count can jump from one density
-  // to the next, and the rounds go back and forth
+  // the round whose count is nearest the one asked for, among those the repair left without a
+  // wrong face if any: where U' is so compressed that samples fall together there (and the
+  // triangulation keeps one), the count can jump from one density to the next, and the rounds
+  // go back and forth
   Lifted_mesh best_mesh;
   std::vector<Vec2> best_uv;
   std::size_t best_wrong = 0;
   double best_miss = HUGE_VAL;
+  bool best_whole = false; // without a wrong face
+  std::pair<double, double> fewer(0., 0.), more(0., 0.); // (density, vertices) of a round below, above the count
   for(int round = 0; round < 8; ++round) {
     const auto t1 = std::chrono::steady_clock::now();
     inside.clear();
+    for(const Surface_location& s : row)
+      if(!excluded[std::size_t(s.face)])
+        inside.push_back(s);
     for(const Surface_location& s : diffuse_samples(raster, m.tri, in.sampling_uv, per_area)) {
       const Vec3 p = locate_in(s, m.tri, m.xyz);
-      if(!excluded[std::size_t(s.face)] && tree.squared_distance(K::Point_3(p[0], p[1], p[2])) >= band2)
+      const K::Point_3 q(p[0], p[1], p[2]);
+      if(!excluded[std::size_t(s.face)] && tree.squared_distance(q) >= band2 &&
+         !near_row.any_within(q, 0.6 * spacing))
         inside.push_back(s);
     }
     r.seconds_sampling += seconds_since(t1);
@@ -379,15 +402,26 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     r.seconds_triangulation += seconds_since(t2);
     const std::size_t used = mesh.number_of_vertices();
     const double miss = std::abs(double(used) - double(settings.vertices));
-    if(miss < best_miss) {
+    const bool whole = r.wrong_faces == 0;
+    if((whole && !best_whole) || (whole == best_whole && miss < best_miss)) {
       best_miss = miss;
+      best_whole = whole;
       best_mesh = mesh;
       best_uv = uv;
       best_wrong = r.wrong_faces;
     }
-    if(miss <= 0.002 * double(settings.vertices) || used <= b)
+    if((whole && miss <= 0.002 * double(settings.vertices)) || used <= b)
       break;
-    per_area *= double(wanted) / double(used - b);
+    // the next density: between the last ones that gave too few and too many vertices once
+    // both are known (the count is not proportional to the density where the samples left out
+    // near the borders are many: a small count, a narrow strip), else scaled by the count's
+    // ratio, by at most 4
+    (used < settings.vertices ? fewer : more) = {per_area, double(used)};
+    if(fewer.first > 0. && more.first > 0.)
+      per_area = fewer.first + (more.first - fewer.first) * (double(settings.vertices) - fewer.second) /
+                                   (more.second - fewer.second);
+    else
+      per_area *= (std::min)(4., (std::max)(0.25, double(wanted_drawn) / double((std::max)(used - b, row.size() + 1) - row.size())));
   }
   mesh = std::move(best_mesh);
   uv.swap(best_uv);
