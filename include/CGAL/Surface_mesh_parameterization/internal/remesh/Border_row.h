@@ -44,7 +44,9 @@ public:
     m_tree.insert(ids.begin(), ids.end());
   }
 
-  const std::vector<K::Point_3>& points() const { return m_points; }
+  Nearby_points(const Nearby_points&) = delete; // the traits point into m_points
+  Nearby_points& operator=(const Nearby_points&) = delete;
+
   bool any_within(const K::Point_3& q, double radius) const
   {
     return !m_points.empty() && bool(m_tree.search_any_point(Sphere(q, radius, 0., m_traits)));
@@ -77,9 +79,6 @@ std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vec
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   std::vector<Surface_location> apexes;
-  double domain_size = 0.; // for a tolerance
-  for(const Vec2& q : domain)
-    domain_size = (std::max)({domain_size, std::abs(q[0]), std::abs(q[1])});
   for(const std::vector<int>& loop : loops)
     for(std::size_t k = 0; k < loop.size(); ++k) {
       const Edge_location &ea = on_border[std::size_t(loop[k])], &eb = on_border[std::size_t(loop[(k + 1) % loop.size()])];
@@ -96,11 +95,8 @@ std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vec
       for(int step = 0; step < 4; ++step) {
         const Vec2 q = {{mid[0] + t * normal[0], mid[1] + t * normal[1]}};
         Surface_location s;
-        if(!locator.locate(q, s))
+        if(!locator.locate_inside(q, s))
           break;
-        const Vec2 found = locate_in(s, m.tri, domain);
-        if(std::abs(found[0] - q[0]) + std::abs(found[1] - q[1]) > 1e-9 * domain_size)
-          break; // outside the domain
         const double reached = norm3(sub3(locate_in(s, m.tri, m.xyz), middle));
         if(std::abs(reached - height) <= 0.05 * height) {
           apexes.push_back(s);

@@ -13,6 +13,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -39,6 +40,18 @@ public:
     }
     m_tree.insert(m_triangles.cbegin(), m_triangles.cend());
     m_tree.accelerate_distance_queries();
+    for(const Vec2& q : uv)
+      m_size = (std::max)({m_size, std::abs(q[0]), std::abs(q[1])});
+  }
+
+  // The surface location of `p` if `p` is in the domain (not outside it, not in a hole, up to
+  // a rounding of its size).
+  bool locate_inside(const Vec2& p, Surface_location& s) const
+  {
+    if(!locate(p, s))
+      return false;
+    const Vec2 found = locate_in(s, m_tri, m_uv);
+    return std::abs(found[0] - p[0]) + std::abs(found[1] - p[1]) <= 1e-9 * m_size;
   }
 
   // The surface location of the point of the domain nearest to `p`; false if the domain has no triangle.
@@ -68,6 +81,7 @@ private:
   std::vector<K::Triangle_3> m_triangles;
   std::vector<int> m_face;
   Tree m_tree;
+  double m_size = 0.; // the largest coordinate of the domain, for a tolerance
 };
 
 } // namespace internal

@@ -253,9 +253,6 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   const std::size_t b = on_border.size();
   std::vector<Surface_location> inside;
   std::vector<char> excluded(m.tri.size(), 0);
-  double domain_size = 0.; // for a tolerance
-  for(const Vec2& q : in.triangulation_uv)
-    domain_size = (std::max)({domain_size, std::abs(q[0]), std::abs(q[1])});
   std::vector<Vec2> points, uv;
   Lifted_mesh mesh;
   const std::size_t wanted_drawn = wanted - row.size();
@@ -335,11 +332,8 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
                       [&](Lifted_mesh::Vertex_index v, const Vec2& q) {
                         const std::size_t i = point_of[std::size_t(v)];
                         Surface_location s;
-                        if(i < b || !locator.locate(q, s))
-                          return false;
-                        const Vec2 found = locate_in(s, m.tri, in.triangulation_uv);
-                        if(std::abs(found[0] - q[0]) + std::abs(found[1] - q[1]) > 1e-9 * domain_size)
-                          return false; // outside the domain (in a hole, by a chord)
+                        if(i < b || !locator.locate_inside(q, s))
+                          return false; // a border vertex, or outside the domain (in a hole, by a chord)
                         inside[i - b] = s;
                         points[i] = q;
                         const Vec3 p = locate_in(s, m.tri, m.xyz);
