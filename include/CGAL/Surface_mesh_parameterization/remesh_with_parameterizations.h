@@ -48,7 +48,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// and a first row of vertices runs along it inside, so that the triangles along the border
 /// are as even as the others.
 /// The new mesh has the input's orientation and about `number_of_vertices` vertices (within a
-/// few in a thousand, unless the border loops alone take more).
+/// few in a thousand from a thousand vertices on, within a few vertices at a hundred or two,
+/// unless the border loops alone take more).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph`, all faces triangles
 /// \tparam PolygonMesh a model of `MutableFaceGraph`

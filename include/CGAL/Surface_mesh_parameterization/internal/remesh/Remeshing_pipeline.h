@@ -255,8 +255,8 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   std::vector<char> excluded(m.tri.size(), 0);
   std::vector<Vec2> points, uv;
   Lifted_mesh mesh;
-  const std::size_t wanted_drawn = wanted - row.size();
-  double per_area = double(wanted_drawn) / raster.total_area;
+  // (the row stands for the samples it leaves out: the density is the one without it)
+  double per_area = double(wanted) / raster.total_area;
   r.seconds_sampling = seconds_since(t0);
   // the round whose count is nearest the one asked for, among those the repair left without a
   // wrong face if any: where U' is so compressed that samples fall together there (and the
@@ -268,7 +268,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   double best_miss = HUGE_VAL;
   bool best_whole = false; // without a wrong face
   std::pair<double, double> fewer(0., 0.), more(0., 0.); // (density, vertices) of a round below, above the count
-  for(int round = 0; round < 8; ++round) {
+  for(int round = 0; round < 16; ++round) {
     const auto t1 = std::chrono::steady_clock::now();
     inside.clear();
     for(const Surface_location& s : row)
@@ -415,7 +415,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       per_area = fewer.first + (more.first - fewer.first) * (double(settings.vertices) - fewer.second) /
                                    (more.second - fewer.second);
     else
-      per_area *= (std::min)(4., (std::max)(0.25, double(wanted_drawn) / double((std::max)(used - b, row.size() + 1) - row.size())));
+      per_area *= (std::min)(4., (std::max)(0.25, double(wanted) / double(used - b)));
   }
   mesh = std::move(best_mesh);
   uv.swap(best_uv);
