@@ -404,7 +404,9 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       best_uv = uv;
       best_wrong = r.wrong_faces;
     }
-    if((whole && miss <= 0.002 * double(settings.vertices)) || used <= b)
+    // (past 8 rounds, only while the rounds leave no wrong face: where each leaves some, a round
+    // costs the repair's many triangulations, and more of them rarely find a round without)
+    if((whole && miss <= 0.002 * double(settings.vertices)) || used <= b || (round >= 7 && !best_whole))
       break;
     // the next density: between the last ones that gave too few and too many vertices once
     // both are known (the count is not proportional to the density where the samples left out
