@@ -79,6 +79,7 @@ std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vec
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   std::vector<Surface_location> apexes;
+  std::vector<K::Point_3> at; // their surface points
   for(const std::vector<int>& loop : loops)
     for(std::size_t k = 0; k < loop.size(); ++k) {
       const Edge_location &ea = on_border[std::size_t(loop[k])], &eb = on_border[std::size_t(loop[(k + 1) % loop.size()])];
@@ -97,9 +98,11 @@ std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vec
         Surface_location s;
         if(!locator.locate_inside(q, s))
           break;
-        const double reached = norm3(sub3(locate_in(s, m.tri, m.xyz), middle));
+        const Vec3 p = locate_in(s, m.tri, m.xyz);
+        const double reached = norm3(sub3(p, middle));
         if(std::abs(reached - height) <= 0.05 * height) {
           apexes.push_back(s);
+          at.emplace_back(p[0], p[1], p[2]);
           break;
         }
         if(!(reached > 0.))
@@ -107,11 +110,6 @@ std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vec
         t *= height / reached;
       }
     }
-  std::vector<K::Point_3> at;
-  for(const Surface_location& s : apexes) {
-    const Vec3 p = locate_in(s, m.tri, m.xyz);
-    at.emplace_back(p[0], p[1], p[2]);
-  }
   const Nearby_points all(at);
   std::vector<char> dropped(at.size(), 0);
   std::vector<Surface_location> row;

@@ -246,10 +246,9 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // ones too close to the border in 3D (closer than half the spacing, where they would make
   // thin triangles with it) or to the border row (closer than 0.6 times the spacing, where
   // equilateral triangles put the next row at 0.87), and the ones beyond the border chords in
-  // U'. Where the lifted
-  // mesh intersects itself or folds (where U' is so compressed that the order of the samples
-  // in it is lost to rounding), the samples of those triangles are taken out, and no sample
-  // is taken again from the input triangles they were in.
+  // U'. Where the lifted mesh intersects itself or folds (where U' is so compressed that the
+  // order of the samples in it is lost to rounding), the samples of those triangles are taken
+  // out, and no sample is taken again from the input triangles they were in.
   const std::size_t b = on_border.size();
   std::vector<Surface_location> inside;
   std::vector<char> excluded(m.tri.size(), 0);
