@@ -17,9 +17,10 @@ mkdir -p build/bench/remeshing benchmark/results
   echo
   echo "\`bash scripts/compare-remeshing.sh $vertices\` on $(date -u +%Y-%m-%d), $(nproc) cores."
   echo "Area variation: coefficient of variation of the 3D triangle areas (lower: more even sampling)."
-  echo "Hausdorff: symmetric, over the input's bounding box diagonal. Times in seconds, wall clock (the"
-  echo "parameterizations use one thread per core); CGAL's isotropic remeshing: the last of its calls"
-  echo "(its edge length is corrected from the count it gives)."
+  echo "Hausdorff and mean distance: symmetric, over the input's bounding box diagonal (the Hausdorff"
+  echo "distance is one point's, where a part thinner than the edges is decided by where a vertex falls)."
+  echo "Times in seconds, wall clock (the parameterizations use one thread per core); CGAL's isotropic"
+  echo "remeshing: the last of its calls (its edge length is corrected from the count it gives)."
   echo
   build/bench/benchmark/Stretch_minimizing_parameterization/remeshing_comparison "$vertices" \
     $data/mannequin-devil.off $data/nefertiti.off $data/three_peaks.off $data/mushroom.off $data/holes.off \

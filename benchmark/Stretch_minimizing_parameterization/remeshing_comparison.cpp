@@ -12,8 +12,8 @@
 // with 0, the figures are those of the samples as the error diffusion placed them.
 //
 // Figures: vertices, angles (smallest, share of 30 degrees or more), coefficient of variation
-// of the triangle areas, symmetric Hausdorff distance to the input over its bounding box
-// diagonal (as smp-remesh reports it: tools/smp_surface_distance.h),
+// of the triangle areas, symmetric Hausdorff and mean distances to the input over its bounding
+// box diagonal (as smp-remesh reports them: tools/smp_surface_distance.h),
 // self-intersecting pairs (CGAL's self_intersections), time. The area variation is also given
 // apart for the border band (the triangles with a corner on the border or one edge from it)
 // and for the triangles further in: the sampling differs most near the border.
@@ -80,12 +80,13 @@ void row(const std::string& mesh_name, const std::string& method, const Mesh& in
   SMP::internal::measure_triangles(xyz, band, q_band);
   SMP::internal::measure_triangles(xyz, further, q_further);
   const double hausdorff = smp_tools::symmetric_hausdorff_distance(out, in, diagonal);
+  const double mean_distance = smp_tools::symmetric_mean_distance(out, in, diagonal);
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > crossing;
   PMP::self_intersections(out, std::back_inserter(crossing));
-  std::printf("| %s | %s | %zu | %.1f | %.2f | %.3f | %.3f | %.3f | %.5f | %zu | %.2f |\n", mesh_name.c_str(),
+  std::printf("| %s | %s | %zu | %.1f | %.2f | %.3f | %.3f | %.3f | %.5f | %.6f | %zu | %.2f |\n", mesh_name.c_str(),
               method.c_str(), std::size_t(out.number_of_vertices()), q.min_angle, 100. * q.angles_at_least_30,
-              q.area_variation, q_band.area_variation, q_further.area_variation, hausdorff / diagonal, crossing.size(),
-              seconds);
+              q.area_variation, q_band.area_variation, q_further.area_variation, hausdorff / diagonal,
+              mean_distance / diagonal, crossing.size(), seconds);
   std::fflush(stdout);
 }
 
@@ -110,8 +111,8 @@ int main(int argc, char** argv)
       files.push_back(argv[i]);
   }
   std::printf("| mesh | method | vertices | smallest angle | angles >= 30 (%%) | area variation | in the border band | "
-              "further in | Hausdorff / diagonal | self-intersecting pairs | seconds |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "further in | Hausdorff / diagonal | mean distance / diagonal | self-intersecting pairs | seconds |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const std::string& file : files) {
     Mesh in;
     if(!CGAL::IO::read_polygon_mesh(file, in) || !CGAL::is_triangle_mesh(in)) {

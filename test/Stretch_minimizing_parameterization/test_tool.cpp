@@ -620,6 +620,7 @@ void check_remesh()
   const std::string report = file_text("out_remesh/nefertiti.json");
   SMP_CHECK(report.find("\"vertices\": " + std::to_string(m.number_of_vertices())) != std::string::npos &&
             report.find("\"hausdorff_distance\"") != std::string::npos &&
+            report.find("\"mean_distance_over_diagonal\"") != std::string::npos &&
             report.find("\"wrong_faces\": 0") != std::string::npos,
             "smp-remesh: the report is not the mesh's: " << report.substr(0, 300));
   SMP_CHECK(run(nefertiti + " -n 800 --pair u0 -q -o out_remesh/nefertiti_u0.obj --report out_remesh/u0.json",
