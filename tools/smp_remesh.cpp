@@ -148,7 +148,7 @@ int run(int argc, char** argv)
   const auto t = std::chrono::steady_clock::now();
   const double diagonal = smp_tools::bounding_box_diagonal(mesh);
   const double hausdorff = smp_tools::symmetric_hausdorff_distance(out, mesh, diagonal);
-  const double mean_distance = smp_tools::symmetric_mean_distance(out, mesh, diagonal);
+  const double mean_distance = smp_tools::symmetric_mean_distance(out, mesh);
   const double seconds_distances = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 
   nlohmann::ordered_json j;

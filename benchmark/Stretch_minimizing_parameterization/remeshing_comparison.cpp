@@ -80,7 +80,7 @@ void row(const std::string& mesh_name, const std::string& method, const Mesh& in
   SMP::internal::measure_triangles(xyz, band, q_band);
   SMP::internal::measure_triangles(xyz, further, q_further);
   const double hausdorff = smp_tools::symmetric_hausdorff_distance(out, in, diagonal);
-  const double mean_distance = smp_tools::symmetric_mean_distance(out, in, diagonal);
+  const double mean_distance = smp_tools::symmetric_mean_distance(out, in);
   std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > crossing;
   PMP::self_intersections(out, std::back_inserter(crossing));
   std::printf("| %s | %s | %zu | %.1f | %.2f | %.3f | %.3f | %.3f | %.5f | %.6f | %zu | %.2f |\n", mesh_name.c_str(),

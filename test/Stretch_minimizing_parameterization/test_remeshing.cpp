@@ -305,7 +305,7 @@ void bundled_meshes()
     const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(head, 3000, out, SMP::parameters::parameterization_pair(pair));
     check_remeshed(head, out, r, 3000, "mannequin-devil.off, pair " + std::to_string(int(pair)));
     variation[int(pair)] = r.area_variation;
-    distance[int(pair)] = smp_tools::symmetric_mean_distance(out, head, smp_tools::bounding_box_diagonal(head));
+    distance[int(pair)] = smp_tools::symmetric_mean_distance(out, head);
   }
   {
     // with {U^0} at 5000 vertices, the samples that fall together in U^0's compressed arms (and
