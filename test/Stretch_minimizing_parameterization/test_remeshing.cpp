@@ -298,7 +298,7 @@ void bundled_meshes()
   const Mesh head = smp_test::read_mesh("mannequin-devil.off");
   // (the mean distance, not the Hausdorff distance: the latter is decided at the tips of the
   // horns, thinner than the edges, by where a vertex falls, which OpenBLAS's kernels for one
-  // processor or another move: {U0, Uopt} against {U0}, 1.00 with one and 1.12 with the other)
+  // processor or another move, past 1.05 times {U0}'s with some)
   double variation[3], distance[3];
   for(const SMP::Remeshing_pair pair : all_pairs) {
     Mesh out;
