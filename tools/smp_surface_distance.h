@@ -52,8 +52,9 @@ double symmetric_mean_distance(const Mesh& a, const Mesh& b)
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
   typedef CGAL::Surface_mesh_parameterization::internal::Aabb_tree<K, Primitive> Tree;
   const auto one_way = [](const Mesh& from, const Mesh& to) {
-    // (CGAL's random sampling draws from a generator seeded anew in each run, whatever the seed
-    // asked for: the same points every time are drawn here)
+    // (CGAL's sampler places each point in its triangle with the process-wide default generator,
+    // whatever seed it is given, so that what drew from it before moves the points: the same
+    // points every time are drawn here)
     std::vector<typename K::Triangle_3> triangles;
     std::vector<double> below; // the area of the triangles before each, and of all at the end
     below.push_back(0.);
