@@ -917,7 +917,8 @@ SMP::internal::Chart_map cells_chart(const std::vector<std::array<int, 2> >& cel
 }
 
 // A band of two cells' width with sharp corners (an L, a U) is cut at each corner, its legs
-// apart; a straight band and an arc bent gently (over two widths) are not cut.
+// apart; a straight band is not cut; an arc bent gently (over two widths) is cut where it has
+// turned by a quarter turn (in the atlas, an arc thin enough is laid out straight before).
 void strip_turn_cuts()
 {
   const int n = 30;
@@ -953,11 +954,29 @@ void strip_turn_cuts()
   SMP::internal::Chart_map line = cells_chart(straight);
   SMP_CHECK(!SMP::internal::strip_turn_cut(line, part, parts), "straight band cut");
   SMP::internal::Chart_map arc = arc_chart(200, 2, 0.04, 1.5 * 3.14159265358979323846, false);
-  for(const SMP::internal::Vec3& p : arc.flat.xyz)
-    arc.uv.push_back({p[0], p[1]});
+  for(const SMP::internal::Vec3& p : arc.flat.xyz) // mirrored: its triangles counterclockwise
+    arc.uv.push_back({p[0], -p[1]});
   arc.ok = true;
   arc.l2 = 1.;
-  SMP_CHECK(!SMP::internal::strip_turn_cut(arc, part, parts), "gently bent arc cut into " << parts);
+  // three quarters of a turn: two cuts, each piece turning by about a quarter turn (the middle
+  // line is a mean of the vertices at one distance along the edges, so not to the degree)
+  const bool arc_cut = SMP::internal::strip_turn_cut(arc, part, parts);
+  std::vector<double> low(3, HUGE_VAL), high(3, -HUGE_VAL); // per part, its triangles' angles
+  for(std::size_t i = 0; arc_cut && parts == 3 && i < part.size(); ++i) {
+    double x = 0., y = 0.;
+    for(int k = 0; k < 3; ++k) {
+      x += arc.uv[std::size_t(arc.flat.tri[i][std::size_t(k)])][0];
+      y += arc.uv[std::size_t(arc.flat.tri[i][std::size_t(k)])][1];
+    }
+    double angle = std::atan2(-y, x); // mirrored back
+    if(angle < 0.) angle += 2. * 3.14159265358979323846;
+    low[std::size_t(part[i])] = (std::min)(low[std::size_t(part[i])], angle);
+    high[std::size_t(part[i])] = (std::max)(high[std::size_t(part[i])], angle);
+  }
+  double widest = 0.;
+  for(std::size_t k = 0; k < 3; ++k) widest = (std::max)(widest, high[k] - low[k]);
+  SMP_CHECK(arc_cut && parts == 3 && widest < 0.6 * 3.14159265358979323846,
+            "gently bent arc: cut " << arc_cut << " into " << parts << ", the widest piece turning by " << widest);
 }
 
 // A bent strip is laid out straight, flip-free and within a hundredth of its stretch (a band of
@@ -1597,6 +1616,47 @@ void detached_pieces()
   SMP_CHECK(alone == std::vector<int>({0, 0}), "a piece on its own changed parts");
 }
 
+// A planar region that the parts of a chart cut goes whole to the part holding most of its
+// area, so that the seam runs along the fold instead of across the plane; a fold of less than
+// half a degree is no fold; a snap that would leave a single part is not made.
+void planar_regions_snapped()
+{
+  namespace I = SMP::internal;
+  // a strip of 8 unit squares (triangles 2 s and 2 s + 1 in square s) along x, folded about the
+  // line x = `at` by `degrees`
+  auto folded_strip = [](int at, double degrees) {
+    I::Flat_triangles strip;
+    const double a = degrees * 3.14159265358979323846 / 180.;
+    for(int x = 0; x <= 8; ++x)
+      for(int y = 0; y <= 1; ++y) {
+        const double d = double(x - at);
+        strip.xyz.push_back(x <= at ? I::Vec3{double(x), double(y), 0.}
+                                    : I::Vec3{double(at) + d * std::cos(a), double(y), d * std::sin(a)});
+      }
+    for(int q = 0; q < 8; ++q)
+      strip.tri.push_back({2 * q, 2 * q + 2, 2 * q + 3}), strip.tri.push_back({2 * q, 2 * q + 3, 2 * q + 1});
+    return strip;
+  };
+  auto snapped = [](const I::Flat_triangles& strip, const std::vector<int>& square_part) {
+    std::vector<int> part;
+    for(int p : square_part) part.insert(part.end(), {p, p});
+    I::snap_planar_regions(strip, part);
+    std::vector<int> result;
+    for(std::size_t t = 0; t < part.size(); t += 2) result.push_back(part[t]);
+    return result;
+  };
+  const std::vector<int> across = {0, 0, 0, 1, 1, 1, 1, 1}; // a cut between squares 2 and 3
+  SMP_CHECK(snapped(folded_strip(4, 90.), across) == std::vector<int>({0, 0, 0, 0, 1, 1, 1, 1}),
+            "the cut across the plane did not move to the fold");
+  SMP_CHECK(snapped(folded_strip(4, 1.), across) == std::vector<int>({0, 0, 0, 0, 1, 1, 1, 1}),
+            "a fold of one degree is not a fold");
+  SMP_CHECK(snapped(folded_strip(4, 0.4), across) == across, "a fold of 0.4 degree was taken for a plane's edge");
+  SMP_CHECK(snapped(folded_strip(8, 0.), across) == across, "a plane went whole to one part, leaving no other");
+  // three parts, the middle one across the fold: each plane to its larger share
+  SMP_CHECK(snapped(folded_strip(4, 30.), {0, 0, 0, 1, 1, 2, 2, 2}) == std::vector<int>({0, 0, 0, 0, 2, 2, 2, 2}),
+            "three parts: not snapped to the planes' larger shares");
+}
+
 // A torus grown into charts within a normal cone of `angle`, and the state of the growing: per
 // triangle its chart and its corners' chart vertices (4 entries a triangle).
 struct Grown_torus
@@ -2109,6 +2169,7 @@ int run_test(int argc, char** argv)
   parts_count();
   polish_steps_end();
   detached_pieces();
+  planar_regions_snapped();
   growing_taken_back();
   join_taken_back();
   charts_joined();

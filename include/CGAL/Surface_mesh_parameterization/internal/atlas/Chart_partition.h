@@ -174,6 +174,62 @@ inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& 
   }
 }
 
+// Cosine of the largest angle between the normal of a planar region's first triangle and those
+// of its other triangles (see snap_planar_regions()).
+constexpr double planar_region_cosine = 0.99996192306; // cos(0.5 degree)
+
+// Gives each planar region of the chart `chart` that `part` cuts (triangles joined through
+// the chart's edges, their normals within planar_region_cosine of the region's first) whole to
+// the part that holds most of its area, as long as two parts or more keep triangles. A plane
+// flattens without stretch whatever its outline, so a seam across it buys nothing, while the
+// edges around it (a model's creases, mostly) are where a seam costs least.
+inline void snap_planar_regions(const Flat_triangles& chart, std::vector<int>& part)
+{
+  const std::size_t n = chart.tri.size();
+  std::vector<Vec3> normal(n);
+  std::vector<double> area(n);
+  for(std::size_t t = 0; t < n; ++t) {
+    const Vec3 &a = chart.xyz[std::size_t(chart.tri[t][0])], &b = chart.xyz[std::size_t(chart.tri[t][1])],
+               &c = chart.xyz[std::size_t(chart.tri[t][2])];
+    normal[t] = cross3(sub3(b, a), sub3(c, a));
+    area[t] = 0.5 * norm3(normal[t]);
+  }
+  std::vector<std::vector<int> > across(n);
+  for(const Shared_side& s : shared_sides(chart)) {
+    across[std::size_t(s.t0)].push_back(s.t1);
+    across[std::size_t(s.t1)].push_back(s.t0);
+  }
+  const auto coplanar = [&](std::size_t t, const Vec3& seed, double seed_area) {
+    return area[t] > 0. && dot3(normal[t], seed) >= planar_region_cosine * 2. * area[t] * 2. * seed_area;
+  };
+  std::vector<int> snapped = part;
+  std::vector<char> seen(n, 0);
+  std::vector<int> region;
+  std::map<int, double> share; // part -> its area in the region
+  for(std::size_t seed = 0; seed < n; ++seed) {
+    if(seen[seed] || !(area[seed] > 0.)) continue;
+    region.assign(1, int(seed));
+    seen[seed] = 1;
+    for(std::size_t i = 0; i < region.size(); ++i)
+      for(int u : across[std::size_t(region[i])])
+        if(!seen[std::size_t(u)] && coplanar(std::size_t(u), normal[seed], area[seed])) {
+          seen[std::size_t(u)] = 1;
+          region.push_back(u);
+        }
+    share.clear();
+    for(int t : region) share[part[std::size_t(t)]] += area[std::size_t(t)];
+    if(share.size() < 2) continue;
+    const auto most = std::max_element(share.begin(), share.end(), [](const auto& x, const auto& y) {
+      return x.second < y.second;
+    });
+    for(int t : region) snapped[std::size_t(t)] = most->first;
+  }
+  std::vector<int> labels = snapped;
+  std::sort(labels.begin(), labels.end());
+  if(std::unique(labels.begin(), labels.end()) - labels.begin() >= 2)
+    part.swap(snapped);
+}
+
 CGAL_SMP_END_SOLVER_NAMESPACE
 } // namespace internal
 } // namespace Surface_mesh_parameterization

@@ -10,7 +10,8 @@
 // arc with little but thinner arcs. A strip of width w bent with radius R laid out straight has
 // its lengths changed by about w / (2 R) only, so such a chart is laid out straight (see
 // straighten_strip()), and keeps that layout where its stretch stays low. A thin chart that
-// turns sharply (at the corners of a rim) is cut there instead (see strip_turn_cut()).
+// turns sharply (at the corners of a rim) is cut there instead, and one that stays bent (too
+// wide for its radius) at every quarter turn (see strip_turn_cut()).
 
 #include <CGAL/Surface_mesh_parameterization/internal/solver_configuration.h>
 
@@ -410,14 +411,16 @@ inline std::vector<double> uv_distances(const std::vector<Triangle>& tri, const 
 
 // Where a long thin chart that stays bent is cut across: at its sharp turns, where the line of
 // its middle turns by more than a quarter turn within two widths on either side (a band around
-// the rim of a CAD part turns at its corners: its straight pieces pack well, the band does not).
-// The chart fills less than 60% of its smallest bounding rectangle and is more than eight widths
-// long (its width: twice its area over its perimeter, or its mean edge length if longer); its
-// length is the distance in uv along its edges from a vertex farthest from another, its middle
-// line the mean position of the vertices in each half width of that distance, and a cut leaves
-// the triangles below the turn's distance on one side, the sharpest turns first, two widths
-// apart at least. `part` gets the part of each triangle, `parts` their number; false if there
-// is no such turn.
+// the rim of a CAD part turns at its corners: its straight pieces pack well, the band does not);
+// without a sharp turn, wherever its middle line has turned by a quarter turn since the start
+// or the last cut (a band around a rounded part, too wide to be laid out straight, packs better
+// in quarters of an arc than whole). The chart fills less than 60% of its smallest bounding
+// rectangle and is more than eight widths long (its width: twice its area over its perimeter,
+// or its mean edge length if longer); its length is the distance in uv along its edges from a
+// vertex farthest from another, its middle line the mean position of the vertices in each half
+// width of that distance, and a cut leaves the triangles below the turn's distance on one side,
+// the sharpest turns first, two widths apart at least. `part` gets the part of each triangle,
+// `parts` their number; false if there is no such turn.
 inline bool strip_turn_cut(const Chart_map& chart, std::vector<int>& part, int& parts)
 {
   double width = 0.;
@@ -483,6 +486,32 @@ inline bool strip_turn_cut(const Chart_map& chart, std::vector<int>& part, int& 
     if(!(turn[i] > 0.25 * 3.14159265358979323846)) break;
     if(std::none_of(cuts.begin(), cuts.end(), [&](double d) { return std::abs(d - at[i]) < reach; }))
       cuts.push_back(at[i]);
+  }
+  // no sharp turn: where the direction of the middle line (over a width on either side) has
+  // turned by a quarter turn since the last cut, a width from either end at least
+  if(cuts.empty()) {
+    double heading = 0., last = 0., previous = HUGE_VAL;
+    bool started = false;
+    for(std::size_t i = 0, before = 0, after = 0; i < n; ++i) {
+      while(before + 1 < i && at[before + 1] <= at[i] - 0.5 * reach) ++before;
+      while(after < n && at[after] < at[i] + 0.5 * reach) ++after;
+      if(!(at[before] <= at[i] - 0.5 * reach) || after == n)
+        continue;
+      const double direction = std::atan2(middle[after][1] - middle[before][1], middle[after][0] - middle[before][0]);
+      if(started) {
+        double d = direction - previous;
+        while(d > 3.14159265358979323846) d -= 2. * 3.14159265358979323846;
+        while(d < -3.14159265358979323846) d += 2. * 3.14159265358979323846;
+        heading += d;
+      }
+      previous = direction;
+      if(!started) { started = true; last = heading; continue; }
+      if(std::abs(heading - last) > 0.5 * 3.14159265358979323846 && at[i] - (cuts.empty() ? at[0] : cuts.back()) >= reach &&
+         at.back() - at[i] >= reach) {
+        cuts.push_back(at[i]);
+        last = heading;
+      }
+    }
   }
   if(cuts.empty())
     return false;

@@ -264,6 +264,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // together), each within the normal cone of chart c, or whole if `whole`; false if one part
   // would hold them all
   auto split = [&](std::size_t c, std::vector<int> part, int parts, bool whole) {
+    if(!whole) // a cut for the stretch bound; the packing's and the turns' are placed on purpose
+      snap_planar_regions(charts[c].flat, part);
     join_detached_pieces(charts[c].flat, part);
     const std::vector<std::size_t> triangles = charts[c].triangles;
     std::unordered_map<std::size_t, std::size_t> polygon_first;
