@@ -490,7 +490,7 @@ inline bool strip_turn_cut(const Chart_map& chart, std::vector<int>& part, int& 
   // no sharp turn: where the direction of the middle line (over a width on either side) has
   // turned by a quarter turn since the last cut, a width from either end at least
   if(cuts.empty()) {
-    double heading = 0., last = 0., previous = HUGE_VAL;
+    double heading = 0., last = 0., previous = 0.; // turned so far, at the last cut; the last direction
     bool started = false;
     for(std::size_t i = 0, before = 0, after = 0; i < n; ++i) {
       while(before + 1 < i && at[before + 1] <= at[i] - 0.5 * reach) ++before;
@@ -505,7 +505,7 @@ inline bool strip_turn_cut(const Chart_map& chart, std::vector<int>& part, int& 
         heading += d;
       }
       previous = direction;
-      if(!started) { started = true; last = heading; continue; }
+      if(!started) { started = true; continue; }
       if(std::abs(heading - last) > 0.5 * 3.14159265358979323846 && at[i] - (cuts.empty() ? at[0] : cuts.back()) >= reach &&
          at.back() - at[i] >= reach) {
         cuts.push_back(at[i]);

@@ -262,9 +262,11 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // grows chart c again as `parts` charts, the parts `part` gives its triangles (each part in
   // one piece; the part of a polygon is that of its first triangle: a polygon's triangles stay
   // together), each within the normal cone of chart c, or whole if `whole`; false if one part
-  // would hold them all
+  // would hold them all. Without `whole` (a cut for the stretch bound), each planar region the
+  // parts cut goes to one of them first; the cuts for the packing and at turns are placed on
+  // purpose, and kept where they are.
   auto split = [&](std::size_t c, std::vector<int> part, int parts, bool whole) {
-    if(!whole) // a cut for the stretch bound; the packing's and the turns' are placed on purpose
+    if(!whole)
       snap_planar_regions(charts[c].flat, part);
     join_detached_pieces(charts[c].flat, part);
     const std::vector<std::size_t> triangles = charts[c].triangles;
