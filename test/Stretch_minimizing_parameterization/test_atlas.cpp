@@ -1649,7 +1649,7 @@ void planar_regions_snapped()
   SMP_CHECK(snapped(folded_strip(4, 90.), across) == std::vector<int>({0, 0, 0, 0, 1, 1, 1, 1}),
             "the cut across the plane did not move to the fold");
   SMP_CHECK(snapped(folded_strip(4, 1.), across) == std::vector<int>({0, 0, 0, 0, 1, 1, 1, 1}),
-            "a fold of one degree is not a fold");
+            "a fold of one degree was taken for a plane");
   SMP_CHECK(snapped(folded_strip(4, 0.4), across) == across, "a fold of 0.4 degree was taken for a plane's edge");
   SMP_CHECK(snapped(folded_strip(8, 0.), across) == across, "a plane went whole to one part, leaving no other");
   // three parts, the middle one across the fold: each plane to its larger share
