@@ -1594,7 +1594,7 @@ void detached_pieces()
   auto joined = [&strip](const std::vector<int>& square_part) {
     std::vector<int> part;
     for(int p : square_part) part.insert(part.end(), {p, p});
-    I::join_detached_pieces(strip, part);
+    I::join_detached_pieces(I::triangles_across(strip), part);
     std::vector<int> result;
     for(std::size_t t = 0; t < part.size(); t += 2) {
       if(part[t] != part[t + 1]) return std::vector<int>(); // a square split: never expected
@@ -1612,7 +1612,7 @@ void detached_pieces()
   apart.xyz = {{0., 0., 0.}, {1., 0., 0.}, {0., 1., 0.}, {5., 0., 0.}, {6., 0., 0.}, {5., 1., 0.}};
   apart.tri = {{0, 1, 2}, {3, 4, 5}};
   std::vector<int> alone = {0, 0};
-  I::join_detached_pieces(apart, alone);
+  I::join_detached_pieces(I::triangles_across(apart), alone);
   SMP_CHECK(alone == std::vector<int>({0, 0}), "a piece on its own changed parts");
 }
 
@@ -1640,7 +1640,7 @@ void planar_regions_snapped()
   auto snapped = [](const I::Flat_triangles& strip, const std::vector<int>& square_part) {
     std::vector<int> part;
     for(int p : square_part) part.insert(part.end(), {p, p});
-    I::snap_planar_regions(strip, part);
+    I::snap_planar_regions(strip, I::triangles_across(strip), part);
     std::vector<int> result;
     for(std::size_t t = 0; t < part.size(); t += 2) result.push_back(part[t]);
     return result;

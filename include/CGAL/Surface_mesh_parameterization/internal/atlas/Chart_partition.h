@@ -116,20 +116,26 @@ inline std::vector<Shared_side> shared_sides(const Flat_triangles& chart)
   return shared;
 }
 
-// Gives each piece of a part that is cut off from the part's largest piece (through the edges
-// of the chart `chart`) to the neighbouring part whose largest piece it shares the most edges
-// with, until every part is in one piece (pieces that no other part touches stay). Parts chosen
-// in the uv plane can hold pieces that a hole or a fold of the chart keeps apart on the surface,
-// and each such piece would become a chart of its own, seams all around.
-inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& part)
+// Per triangle of `chart`, the triangles of the chart across its sides.
+inline std::vector<std::vector<int> > triangles_across(const Flat_triangles& chart)
 {
-  const std::size_t n = chart.tri.size();
-  // the triangles across each side, in the chart
-  std::vector<std::vector<int> > across(n);
+  std::vector<std::vector<int> > across(chart.tri.size());
   for(const Shared_side& s : shared_sides(chart)) {
     across[std::size_t(s.t0)].push_back(s.t1);
     across[std::size_t(s.t1)].push_back(s.t0);
   }
+  return across;
+}
+
+// Gives each piece of a part that is cut off from the part's largest piece (through the edges
+// of the chart, `across` = triangles_across() of it) to the neighbouring part whose largest
+// piece it shares the most edges with, until every part is in one piece (pieces that no other
+// part touches stay). Parts chosen in the uv plane can hold pieces that a hole or a fold of the
+// chart keeps apart on the surface, and each such piece would become a chart of its own, seams
+// all around.
+inline void join_detached_pieces(const std::vector<std::vector<int> >& across, std::vector<int>& part)
+{
+  const std::size_t n = across.size();
   // the largest pieces keep their part and only grow: each round joins at least one piece to
   // one of them, or ends
   for(bool changed = true; changed;) {
@@ -179,11 +185,13 @@ inline void join_detached_pieces(const Flat_triangles& chart, std::vector<int>& 
 constexpr double planar_region_cosine = 0.99996192306; // cos(0.5 degree)
 
 // Gives each planar region of the chart `chart` that `part` cuts (triangles joined through
-// the chart's edges, their normals within planar_region_cosine of the region's first) whole to
-// the part that holds most of its area, as long as two parts or more keep triangles. A plane
-// flattens without stretch whatever its outline, so a seam across it buys nothing, while the
-// edges around it (a model's creases, mostly) are where a seam costs least.
-inline void snap_planar_regions(const Flat_triangles& chart, std::vector<int>& part)
+// the chart's edges, `across` = triangles_across() of it, their normals within
+// planar_region_cosine of the region's first) whole to the part that holds most of its area, as
+// long as two parts or more keep triangles. A plane flattens without stretch whatever its
+// outline, so a seam across it buys nothing, while the edges around it (a model's creases,
+// mostly) are where a seam costs least.
+inline void snap_planar_regions(const Flat_triangles& chart, const std::vector<std::vector<int> >& across,
+                                std::vector<int>& part)
 {
   const std::size_t n = chart.tri.size();
   std::vector<Vec3> normal(n);
@@ -193,11 +201,6 @@ inline void snap_planar_regions(const Flat_triangles& chart, std::vector<int>& p
                &c = chart.xyz[std::size_t(chart.tri[t][2])];
     normal[t] = cross3(sub3(b, a), sub3(c, a));
     area[t] = 0.5 * norm3(normal[t]);
-  }
-  std::vector<std::vector<int> > across(n);
-  for(const Shared_side& s : shared_sides(chart)) {
-    across[std::size_t(s.t0)].push_back(s.t1);
-    across[std::size_t(s.t1)].push_back(s.t0);
   }
   const auto coplanar = [&](std::size_t t, const Vec3& seed, double seed_area) {
     return area[t] > 0. && dot3(normal[t], seed) >= planar_region_cosine * 2. * area[t] * 2. * seed_area;
@@ -224,9 +227,7 @@ inline void snap_planar_regions(const Flat_triangles& chart, std::vector<int>& p
     });
     for(int t : region) snapped[std::size_t(t)] = most->first;
   }
-  std::vector<int> labels = snapped;
-  std::sort(labels.begin(), labels.end());
-  if(std::unique(labels.begin(), labels.end()) - labels.begin() >= 2)
+  if(std::any_of(snapped.begin(), snapped.end(), [&snapped](int p) { return p != snapped.front(); }))
     part.swap(snapped);
 }
 

@@ -266,9 +266,10 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // parts cut goes to one of them first; the cuts for the packing and at turns are placed on
   // purpose, and kept where they are.
   auto split = [&](std::size_t c, std::vector<int> part, int parts, bool whole) {
+    const std::vector<std::vector<int> > across = triangles_across(charts[c].flat);
     if(!whole)
-      snap_planar_regions(charts[c].flat, part);
-    join_detached_pieces(charts[c].flat, part);
+      snap_planar_regions(charts[c].flat, across, part);
+    join_detached_pieces(across, part);
     const std::vector<std::size_t> triangles = charts[c].triangles;
     std::unordered_map<std::size_t, std::size_t> polygon_first;
     for(std::size_t i = 0; i < triangles.size(); ++i)
