@@ -570,7 +570,7 @@ int run(int argc, char** argv)
   for(const auto& s : run.history)
     report["history"].push_back({{"step", s.step}, {"l2_stretch", s.l2_stretch}, {"linf_stretch", s.linf_stretch},
                                  {"flipped_faces", s.flipped_faces}, {"degenerate_uv_faces", s.degenerate_uv_faces},
-                                 {"seconds", s.seconds}});
+                                 {"solver_iterations", s.solver_iterations}, {"seconds", s.seconds}});
   report["kept_step"] = ours ? Json(run.kept_step) : Json(nullptr);
   report["polish"] = {{"ran", run.polish.ran()}, {"descent_iterations", run.polish.descent_iterations},
                       {"iterations", run.polish.iterations}, {"l2_before", run.polish.l2_before},

@@ -577,6 +577,9 @@ void check_multigrid(const std::string& name)
   SMP_CHECK(lu.solve(w_lu, uv_lu, lu_traits, 2) && mg.solve(w_mg, uv_mg, mg_traits, 2) &&
             mg1.solve(w_mg1, uv_mg1, mg1_traits, 1), name << ": a solve failed");
   SMP_CHECK(mg.multigrid() && mg1.multigrid(), name << ": the multigrid solver gave way to the direct solver");
+  SMP_CHECK(lu.solver_iterations() == 0 && mg.solver_iterations() > 0 && mg.solver_iterations() == mg1.solver_iterations(),
+            name << ": solver iterations " << lu.solver_iterations() << " (LU), " << mg.solver_iterations() << " and "
+            << mg1.solver_iterations() << " (multigrid on two threads and on one)");
   double distance = 0.;
   for(std::size_t v = 0; v < uv.size(); ++v)
     distance = (std::max)(distance, std::hypot(uv_lu[v][0] - uv_mg[v][0], uv_lu[v][1] - uv_mg[v][1]));
@@ -721,9 +724,14 @@ void check_large_system()
   SMP_CHECK(hd.size() == hm.size() && direct.report().kept_step == multigrid.report().kept_step,
             "multigrid: " << hm.size() << " steps, U^" << multigrid.report().kept_step << " kept; UMFPACK: "
             << hd.size() << ", U^" << direct.report().kept_step);
-  for(std::size_t h = 0; h < (std::min)(hd.size(), hm.size()); ++h)
+  for(std::size_t h = 0; h < (std::min)(hd.size(), hm.size()); ++h) {
     SMP_CHECK(std::abs(hd[h].l2_stretch - hm[h].l2_stretch) < 1e-6 * hd[h].l2_stretch,
               "U^" << h << ": L2 " << hm[h].l2_stretch << " by the multigrid solver, " << hd[h].l2_stretch << " by UMFPACK");
+    // a working cycle divides the residual by more than 3 an iteration: 1e-12 within 25
+    SMP_CHECK(hd[h].solver_iterations == 0 && hm[h].solver_iterations > 0 && hm[h].solver_iterations <= 25,
+              "U^" << h << ": " << hm[h].solver_iterations << " multigrid iterations, "
+              << hd[h].solver_iterations << " reported for UMFPACK's factorization");
+  }
   std::cout << "207k vertices, U^opt: multigrid and UMFPACK maps differ by " << max_distance(m, uvd, uvm) << std::endl;
 
   // symmetric weights on a large system: the Cholesky in METIS's order of the vertices where

@@ -512,12 +512,14 @@ private:
 
       Stretch_minimizing_step step = internal::make_step(h, s, start);
       step.eta = h == 0 ? 0. : eta;
+      step.solver_iterations = system.solver_iterations();
       rep.history.push_back(step);
       rep.degenerate_3d_faces = s.degenerate_3d;
       if(settings.verbose)
         std::cerr << "stretch minimization: step " << h << "  eta " << step.eta << "  L2 " << s.l2
                   << "  Linf " << s.linf << "  flipped " << s.flipped << "  degenerate "
-                  << s.degenerate_uv << "  " << step.seconds << " s" << std::endl;
+                  << s.degenerate_uv << "  solver iterations " << step.solver_iterations << "  " << step.seconds << " s"
+                  << std::endl;
 
       const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;
       const bool better = valid && (best_uv.empty() ||

@@ -10,7 +10,9 @@
 #include <Eigen/Dense>
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -23,6 +25,7 @@ namespace internal {
 // the thread count. A column has converged when its residual is below `tolerance` times the
 // norm of its right-hand side; a column that does not converge in `max_iterations`, or whose
 // iteration breaks down, fails the solve, and the caller then falls back to a direct solver.
+// `iterations()` tells how many iterations the last solve took (the most of its columns).
 class Multigrid_solver
 {
 public:
@@ -39,27 +42,34 @@ public:
   }
 
   // X: the guess on entry, the solution on return (B's size). False if a column fails.
-  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X, unsigned int threads) const
+  bool solve(const Eigen::MatrixXd& B, Eigen::MatrixXd& X, unsigned int threads)
   {
     if(X.rows() != B.rows() || X.cols() != B.cols())
       X.setZero(B.rows(), B.cols());
-    std::vector<int> converged(std::size_t(B.cols()), 0);
+    std::vector<int> converged(std::size_t(B.cols()), 0), iterations(std::size_t(B.cols()), 0);
     parallel_for_each(std::size_t(B.cols()), threads, [&](std::size_t c) {
       Eigen::VectorXd x = X.col(Eigen::Index(c));
-      converged[c] = bicgstab(B.col(Eigen::Index(c)), x) ? 1 : 0;
+      converged[c] = bicgstab(B.col(Eigen::Index(c)), x, iterations[c]) ? 1 : 0;
       X.col(Eigen::Index(c)) = x;
     });
+    m_iterations = 0;
+    for(int k : iterations)
+      m_iterations = (std::max)(m_iterations, std::size_t(k));
     for(int ok : converged)
       if(!ok)
         return false;
     return X.allFinite();
   }
 
+  std::size_t iterations() const { return m_iterations; }
+
   void release() { m_multigrid.release(); }
 
 private:
-  bool bicgstab(const Eigen::VectorXd& b, Eigen::VectorXd& x) const
+  // `iterations`: how many were taken, on return
+  bool bicgstab(const Eigen::VectorXd& b, Eigen::VectorXd& x, int& iterations) const
   {
+    iterations = 0;
     const Aggregation_multigrid::Row_matrix& A = m_multigrid.matrix();
     const double target = tolerance * b.norm();
     Eigen::VectorXd r = b - A * x;
@@ -69,6 +79,7 @@ private:
     Eigen::VectorXd r0 = r, p = Eigen::VectorXd::Zero(b.size()), v = p, y, z, s, t;
     double rho = 1., alpha = 1., omega = 1.;
     for(int k = 0; k < max_iterations; ++k) {
+      iterations = k + 1;
       const double rho_next = r0.dot(r);
       if(!(std::abs(rho_next) > 0.))
         return false;
@@ -95,6 +106,7 @@ private:
   }
 
   Aggregation_multigrid m_multigrid;
+  std::size_t m_iterations = 0;
 };
 
 } // namespace internal

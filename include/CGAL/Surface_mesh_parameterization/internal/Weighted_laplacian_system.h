@@ -123,6 +123,9 @@ public:
   // Whether the next solve is by the multigrid solver.
   bool multigrid() const { return m_multigrid; }
 
+  // The iterations of the last solve if the multigrid solver gave it, else 0 (a factorization).
+  std::size_t solver_iterations() const { return m_multigrid ? m_multigrid_solver.iterations() : 0; }
+
   // The next solves are by the direct solver.
   void use_direct_solver()
   {
