@@ -727,8 +727,10 @@ void check_large_system()
   for(std::size_t h = 0; h < (std::min)(hd.size(), hm.size()); ++h) {
     SMP_CHECK(std::abs(hd[h].l2_stretch - hm[h].l2_stretch) < 1e-6 * hd[h].l2_stretch,
               "U^" << h << ": L2 " << hm[h].l2_stretch << " by the multigrid solver, " << hd[h].l2_stretch << " by UMFPACK");
-    // a working cycle divides the residual by more than 3 an iteration: 1e-12 within 25
-    SMP_CHECK(hd[h].solver_iterations == 0 && hm[h].solver_iterations > 0 && hm[h].solver_iterations <= 25,
+    // a working cycle takes the residual to 1e-12 within 50 iterations even on the uneven
+    // systems of the last steps (benchmark/results/multigrid_damping.md); one that stops working
+    // goes on to the cap of 200
+    SMP_CHECK(hd[h].solver_iterations == 0 && hm[h].solver_iterations > 0 && hm[h].solver_iterations <= 50,
               "U^" << h << ": " << hm[h].solver_iterations << " multigrid iterations, "
               << hd[h].solver_iterations << " reported for UMFPACK's factorization");
   }

@@ -106,9 +106,13 @@ public:
   static constexpr double max_coarse_ratio = 0.9;
   // a_ij couples i and j strongly if |a_ij| >= threshold sqrt(|a_ii a_jj|) (on the finest level)
   static constexpr double strength_threshold = 0.08;
-  // damping of the Jacobi step that smooths the prolongation: 4/3 over a spectral radius of
-  // D^{-1} A of at most 2 (the finest rows are weakly diagonally dominant)
-  static constexpr double prolongation_damping = 2. / 3.;
+  // damping of the Jacobi step that smooths the prolongation: 4/3 over the spectral radius of
+  // D^{-1} A (Vanek et al.). Gershgorin bounds that radius by 2 (the finest rows are weakly
+  // diagonally dominant), but on a triangle mesh it is nearer 3/2, its value on a regular one
+  // with equal weights (the mean over the six neighbours has -1/2 as its lowest eigenvalue):
+  // the damping of the bound, 2/3, left the prolongation under-smoothed and cost more
+  // iterations (benchmark/results/multigrid_damping.md).
+  static constexpr double prolongation_damping = 8. / 9.;
 
 private:
   typedef Eigen::SparseLU<Eigen::SparseMatrix<double> > Coarse_lu;
