@@ -26,7 +26,7 @@ struct Stretch_minimizing_step
   std::size_t flipped_faces = 0;       ///< faces oriented against the others
   std::size_t degenerate_uv_faces = 0; ///< faces of zero parameter area (e.g. border ears)
   double seconds = 0.;                 ///< wall time since the start of the call
-  std::size_t solver_iterations = 0;   ///< iterations of the package's iterative (multigrid) solver for \f$ U^h \f$, the most of the u and v columns; 0 when the system was factored
+  std::size_t solver_iterations = 0;   ///< iterations of the package's iterative (multigrid) solver for \f$ U^h \f$, the most of the u and v columns; 0 when the system was factored (or the previous map already solved it)
   bool polish = false;                 ///< a step of the polish stage (`step` counts from 1 there)
   bool descent = false;                ///< a descent step of the polish stage, before its Newton steps
 };
