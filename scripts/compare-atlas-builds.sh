@@ -11,39 +11,16 @@
 # tools all along, as other work on a shared machine does. Writes a markdown table and the
 # totals to standard output.
 set -euo pipefail
-
-runs=3
-busy=0
-while [ $# -gt 0 ]; do
-  case "$1" in
-    -r) runs="$2"; shift 2 ;;
-    -l) busy="$2"; shift 2 ;;
-    *) break ;;
-  esac
-done
-[ $# -ge 3 ] || { echo "usage: bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH..." >&2; exit 2; }
-before="$(realpath "$1")"
-after="$(realpath "$2")"
-shift 2
-work="$(mktemp -d)"
-pids=()
-trap 'rm -rf "$work"; for p in "${pids[@]}"; do kill "$p" 2>/dev/null || true; done' EXIT
-for _ in $(seq "$busy"); do
-  sh -c 'while :; do :; done' &
-  pids+=("$!")
-done
+# shellcheck source=lib/two-builds.sh
+. "$(dirname "$0")/lib/two-builds.sh"
+two_builds_init "bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
 
 echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns, $busy busy processes beside"
 echo
 echo "| mesh | charts | L2 | seam % | utilization | atlas s (least) | same OBJ |"
 echo "|---|---:|---:|---:|---:|---:|---|"
-for mesh in "$@"; do
-  for r in $(seq "$runs"); do
-    for tool in before after; do
-      "${!tool}" "$mesh" --atlas --no-pictures -q -o "$work/$tool-$r" >/dev/null 2>&1 ||
-        { echo "$tool failed on $mesh" >&2; exit 1; }
-    done
-  done
+for mesh in "${meshes[@]}"; do
+  two_builds_run "$mesh" --atlas
   obj="$(basename "${mesh%.*}").obj"
   same=no
   cmp -s "$work/before-1/$obj" "$work/after-1/$obj" && same=yes

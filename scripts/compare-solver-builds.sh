@@ -11,35 +11,16 @@
 # multigrid solver, which serves from 30,000 interior vertices. Writes a markdown table and the
 # totals to standard output.
 set -euo pipefail
-
-runs=3
-args=""
-while [ $# -gt 0 ]; do
-  case "$1" in
-    -r) runs="$2"; shift 2 ;;
-    -a) args="$2"; shift 2 ;;
-    *) break ;;
-  esac
-done
-[ $# -ge 3 ] || { echo "usage: bash scripts/compare-solver-builds.sh [-r RUNS] [-a ARGS] TOOL_BEFORE TOOL_AFTER MESH..." >&2; exit 2; }
-before="$(realpath "$1")"
-after="$(realpath "$2")"
-shift 2
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=lib/two-builds.sh
+. "$(dirname "$0")/lib/two-builds.sh"
+two_builds_init "bash scripts/compare-solver-builds.sh [-r RUNS] [-a ARGS] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
 
 echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns${args:+, options $args}"
 echo
 echo "| mesh | vertices | steps (kept) | L2 of U^opt | largest L2 difference | solver iterations | parameterization s (least) |"
 echo "|---|---:|---:|---:|---:|---:|---:|"
-for mesh in "$@"; do
-  for r in $(seq "$runs"); do
-    for tool in before after; do
-      # shellcheck disable=SC2086 # ARGS is a list of options
-      "${!tool}" "$mesh" $args --no-pictures -q -o "$work/$tool-$r" >/dev/null 2>&1 ||
-        { echo "$tool failed on $mesh" >&2; exit 1; }
-    done
-  done
+for mesh in "${meshes[@]}"; do
+  two_builds_run "$mesh"
   python3 - "$work" "$runs" "$(basename "$mesh")" <<'PY'
 import json, sys
 work, runs, name = sys.argv[1], int(sys.argv[2]), sys.argv[3]
