@@ -11,7 +11,7 @@
 # tools all along, as other work on a shared machine does. Writes a markdown table and the
 # totals to standard output.
 set -euo pipefail
-# shellcheck source=lib/two-builds.sh
+# shellcheck source-path=SCRIPTDIR source=lib/two-builds.sh
 . "$(dirname "$0")/lib/two-builds.sh"
 two_builds_init "bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
 

@@ -11,7 +11,7 @@
 # multigrid solver, which serves from 30,000 interior vertices. Writes a markdown table and the
 # totals to standard output.
 set -euo pipefail
-# shellcheck source=lib/two-builds.sh
+# shellcheck source-path=SCRIPTDIR source=lib/two-builds.sh
 . "$(dirname "$0")/lib/two-builds.sh"
 two_builds_init "bash scripts/compare-solver-builds.sh [-r RUNS] [-a ARGS] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
 

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by the scripts that set two builds of smp-parameterize side by side
 # (compare-atlas-builds.sh, compare-solver-builds.sh): their options, the scratch directory and
 # the runs in turns, so that both tools see the same load.
@@ -24,9 +25,12 @@ two_builds_init()
     esac
   done
   [ $# -ge 3 ] || { echo "usage: $usage" >&2; exit 2; }
+  # shellcheck disable=SC2034 # read by name in two_builds_run
   before="$(realpath "$1")"
+  # shellcheck disable=SC2034 # read by name in two_builds_run
   after="$(realpath "$2")"
   shift 2
+  # shellcheck disable=SC2034 # read by the sourcing script
   meshes=("$@")
   work="$(mktemp -d)"
   busy_pids=()
