@@ -34,10 +34,19 @@ two_builds_init()
   meshes=("$@")
   work="$(mktemp -d)"
   busy_pids=()
-  trap 'rm -rf "$work"; for p in "${busy_pids[@]}"; do kill "$p" 2>/dev/null || true; done' EXIT
+  trap two_builds_cleanup EXIT
   for _ in $(seq "$busy"); do
     sh -c 'while :; do :; done' &
     busy_pids+=("$!")
+  done
+}
+
+two_builds_cleanup()
+{
+  local p
+  rm -rf "$work"
+  for p in "${busy_pids[@]}"; do
+    kill "$p" 2>/dev/null || true
   done
 }
 
