@@ -5,15 +5,16 @@
 # stretch, seam share and utilization (deterministic: the same in every run), and whether the
 # two OBJ files are the same byte for byte (a change meant to keep every atlas). From the root of
 # the repository:
-#   bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH...
+#   bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] [-a "ARGS"] TOOL_BEFORE TOOL_AFTER MESH...
 # TOOL_*: smp-parameterize executables (e.g. build/release/tools/smp-parameterize of two
 # checkouts); RUNS defaults to 3. BUSY (default 0): processes that keep a core busy beside the
-# tools all along, as other work on a shared machine does. Writes a markdown table and the
+# tools all along, as other work on a shared machine does; ARGS: options given to both tools
+# beside --atlas (e.g. "--max-stretch 1.1"). Writes a markdown table and the
 # totals to standard output.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=lib/two-builds.sh
 . "$(dirname "$0")/lib/two-builds.sh"
-two_builds_init "bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
+two_builds_init "bash scripts/compare-atlas-builds.sh [-r RUNS] [-l BUSY] [-a ARGS] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
 
 echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns, $busy busy processes beside"
 echo

@@ -5,15 +5,16 @@
 # is kept with the steps, the L2 stretch of U^opt, the largest relative difference of the two
 # builds' L2 stretch over the steps, and the solver iterations summed over the steps
 # (deterministic: the same in every run). From the root of the repository:
-#   bash scripts/compare-solver-builds.sh [-r RUNS] [-a "ARGS"] TOOL_BEFORE TOOL_AFTER MESH...
-# TOOL_*: smp-parameterize executables of two checkouts; RUNS defaults to 3; ARGS: options given
-# to both tools (e.g. "--cut" for closed genus-0 meshes). The iterations are those of the
+#   bash scripts/compare-solver-builds.sh [-r RUNS] [-l BUSY] [-a "ARGS"] TOOL_BEFORE TOOL_AFTER MESH...
+# TOOL_*: smp-parameterize executables of two checkouts; RUNS defaults to 3; BUSY (default 0):
+# processes that keep a core busy beside the tools; ARGS: options given to both tools (e.g.
+# "--cut" for closed genus-0 meshes). The iterations are those of the
 # multigrid solver, which serves from 30,000 interior vertices. Writes a markdown table and the
 # totals to standard output.
 set -euo pipefail
 # shellcheck source-path=SCRIPTDIR source=lib/two-builds.sh
 . "$(dirname "$0")/lib/two-builds.sh"
-two_builds_init "bash scripts/compare-solver-builds.sh [-r RUNS] [-a ARGS] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
+two_builds_init "bash scripts/compare-solver-builds.sh [-r RUNS] [-l BUSY] [-a ARGS] TOOL_BEFORE TOOL_AFTER MESH..." "$@"
 
 echo "$(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores, load average $(cut -d ' ' -f 1-3 /proc/loadavg), $runs runs each in turns${args:+, options $args}"
 echo

@@ -46,15 +46,14 @@ public:
   {
     if(X.rows() != B.rows() || X.cols() != B.cols())
       X.setZero(B.rows(), B.cols());
-    std::vector<int> converged(std::size_t(B.cols()), 0), iterations(std::size_t(B.cols()), 0);
+    std::vector<int> converged(std::size_t(B.cols()), 0);
+    std::vector<std::size_t> iterations(std::size_t(B.cols()), 0);
     parallel_for_each(std::size_t(B.cols()), threads, [&](std::size_t c) {
       Eigen::VectorXd x = X.col(Eigen::Index(c));
       converged[c] = bicgstab(B.col(Eigen::Index(c)), x, iterations[c]) ? 1 : 0;
       X.col(Eigen::Index(c)) = x;
     });
-    m_iterations = 0;
-    for(int k : iterations)
-      m_iterations = (std::max)(m_iterations, std::size_t(k));
+    m_iterations = iterations.empty() ? 0 : *std::max_element(iterations.begin(), iterations.end());
     for(int ok : converged)
       if(!ok)
         return false;
@@ -67,7 +66,7 @@ public:
 
 private:
   // `iterations`: how many were taken, on return
-  bool bicgstab(const Eigen::VectorXd& b, Eigen::VectorXd& x, int& iterations) const
+  bool bicgstab(const Eigen::VectorXd& b, Eigen::VectorXd& x, std::size_t& iterations) const
   {
     iterations = 0;
     const Aggregation_multigrid::Row_matrix& A = m_multigrid.matrix();
@@ -79,7 +78,7 @@ private:
     Eigen::VectorXd r0 = r, p = Eigen::VectorXd::Zero(b.size()), v = p, y, z, s, t;
     double rho = 1., alpha = 1., omega = 1.;
     for(int k = 0; k < max_iterations; ++k) {
-      iterations = k + 1;
+      iterations = std::size_t(k) + 1;
       const double rho_next = r0.dot(r);
       if(!(std::abs(rho_next) > 0.))
         return false;
