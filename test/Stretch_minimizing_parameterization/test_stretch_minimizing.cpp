@@ -586,6 +586,53 @@ void check_multigrid(const std::string& name)
   SMP_CHECK(distance < 1e-9, name << ": the multigrid solver and the LU differ by " << distance);
   SMP_CHECK(uv_mg == uv_mg1, name << ": the multigrid solution depends on the number of threads");
 
+  // a screening solve stops early, and its refinement goes on with the same iteration: the map
+  // and the iteration count of one full solve, bit for bit; a full solve needs no refinement
+  {
+    System screened(dc, false, {}, 0);
+    std::vector<double> w_s = w;
+    std::vector<SMP::internal::Vec2> uv_s = uv;
+    SMP_CHECK(screened.solve(w_s, uv_s, mg1_traits, 2, true) && screened.screened() &&
+              screened.solver_iterations() > 0 && screened.solver_iterations() < mg.solver_iterations(),
+              name << ": the screening solve took " << screened.solver_iterations() << " iterations, the full one "
+                   << mg.solver_iterations());
+    SMP_CHECK(uv_s != uv_mg, name << ": the screening solve gave the full solution");
+    SMP_CHECK(screened.refine(w_s, uv_s, mg1_traits, 2) && !screened.screened() && uv_s == uv_mg &&
+              screened.solver_iterations() == mg.solver_iterations(),
+              name << ": the refined screening solve differs from a full solve (" << screened.solver_iterations()
+                   << " iterations against " << mg.solver_iterations() << ")");
+    const std::vector<SMP::internal::Vec2> before = uv_s;
+    SMP_CHECK(screened.refine(w_s, uv_s, mg1_traits, 2) && uv_s == before, name << ": a full solve was refined");
+  }
+
+  // the products of the hierarchy: Eigen's, on any number of threads
+  {
+    typedef SMP::internal::Aggregation_multigrid::Row_matrix Row_matrix;
+    Row_matrix X(40000, 30000), Y(30000, 5000);
+    std::vector<Eigen::Triplet<double> > x_entries, y_entries;
+    std::uniform_int_distribution<int> x_col(0, 29999), y_col(0, 4999);
+    for(int i = 0; i < 40000; ++i)
+      for(int k = 0; k < 7; ++k)
+        x_entries.emplace_back(i, x_col(rng), scale(rng) - 2.);
+    for(int i = 0; i < 30000; ++i)
+      for(int k = 0; k < 4; ++k)
+        y_entries.emplace_back(i, y_col(rng), scale(rng));
+    X.setFromTriplets(x_entries.begin(), x_entries.end());
+    Y.setFromTriplets(y_entries.begin(), y_entries.end());
+    const Row_matrix by_eigen = X * Y;
+    const Row_matrix one = SMP::internal::Aggregation_multigrid::product(X, Y, 1);
+    const Row_matrix two = SMP::internal::Aggregation_multigrid::product(X, Y, 2);
+    const bool same_pattern = one.nonZeros() == by_eigen.nonZeros() && two.nonZeros() == one.nonZeros() &&
+      std::equal(one.outerIndexPtr(), one.outerIndexPtr() + one.rows() + 1, by_eigen.outerIndexPtr()) &&
+      std::equal(one.innerIndexPtr(), one.innerIndexPtr() + one.nonZeros(), by_eigen.innerIndexPtr()) &&
+      std::equal(two.outerIndexPtr(), two.outerIndexPtr() + two.rows() + 1, one.outerIndexPtr()) &&
+      std::equal(two.innerIndexPtr(), two.innerIndexPtr() + two.nonZeros(), one.innerIndexPtr());
+    SMP_CHECK(same_pattern && (one - by_eigen).norm() <= 1e-14 * by_eigen.norm() &&
+              std::equal(two.valuePtr(), two.valuePtr() + two.nonZeros(), one.valuePtr()),
+              "the hierarchy's product differs from Eigen's or between one thread and two ("
+                << one.nonZeros() << ", " << two.nonZeros() << " and " << by_eigen.nonZeros() << " entries)");
+  }
+
   // the direct solver in its place: the LU's map again (the weights, normalized by the first
   // solves, are normalized alike in both)
   mg.use_direct_solver();
@@ -725,8 +772,15 @@ void check_large_system()
             "multigrid: " << hm.size() << " steps, U^" << multigrid.report().kept_step << " kept; UMFPACK: "
             << hd.size() << ", U^" << direct.report().kept_step);
   for(std::size_t h = 0; h < (std::min)(hd.size(), hm.size()); ++h) {
-    SMP_CHECK(std::abs(hd[h].l2_stretch - hm[h].l2_stretch) < 1e-6 * hd[h].l2_stretch,
-              "U^" << h << ": L2 " << hm[h].l2_stretch << " by the multigrid solver, " << hd[h].l2_stretch << " by UMFPACK");
+    // the rejected last step is only screened: its stretch is that of an approximate map
+    const double error = hm[h].screened ? 1e-5 : 1e-6;
+    SMP_CHECK(std::abs(hd[h].l2_stretch - hm[h].l2_stretch) < error * hd[h].l2_stretch,
+              "U^" << h << ": L2 " << hm[h].l2_stretch << " by the multigrid solver" << (hm[h].screened ? " (screened)" : "")
+                   << ", " << hd[h].l2_stretch << " by UMFPACK");
+    SMP_CHECK(!hd[h].screened && hm[h].screened == (h + 1 == hm.size() && h > multigrid.report().kept_step),
+              "U^" << h << (hm[h].screened ? " was" : " was not") << " screened");
+    std::cout << "207k vertices, U^" << h << ": relative L2 difference "
+              << std::abs(hd[h].l2_stretch - hm[h].l2_stretch) / hd[h].l2_stretch << (hm[h].screened ? " (screened)" : "") << std::endl;
     // a working cycle takes the residual to 1e-12 within 50 iterations even on the uneven
     // systems of the last steps (benchmark/results/multigrid_damping.md); one that stops working
     // goes on to the cap of 200

@@ -136,7 +136,11 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///         algebraic multigrid cycle, started from the previous step's map, to a residual of
 ///         \f$ 10^{-12} \f$ times the right-hand side's), whose time and memory grow in
 ///         proportion to the mesh where those of a sparse LU grow faster: the stretch of every
-///         step is the direct solver's to about \f$ 10^{-6} \f$ (tested). It gives way to the
+///         step is the direct solver's to about \f$ 10^{-6} \f$ (tested). After \f$ U^0 \f$,
+///         a step is first solved to a residual of \f$ 10^{-6} \f$ only: a map whose stretch is
+///         then more than 1% above the kept one's is rejected as it is (the paper's last step, so
+///         marked in the report: `Stretch_minimizing_step::screened`), the others are solved on
+///         to \f$ 10^{-12} \f$ by the same iteration (the same maps). It gives way to the
 ///         direct solver for the rest of the call if it does not converge, or if its map has a
 ///         flipped face. Solver traits given here are used at every size.
 ///         Symmetric weights (the clamped cotangent start with the edge or symmetric update, as
@@ -490,10 +494,20 @@ private:
     const unsigned int threads = internal::thread_count(settings.threads);
     for(std::size_t h = 0;; ++h) {
       stretch.release();
-      bool solved = system.solve(w, uv, m_solver_traits, threads);
+      // after a step is kept, the multigrid solver first solves only far enough to tell a step
+      // that clearly raises the stretch (the paper's last step, rejected): such a step needs no
+      // more; the others are solved fully
+      bool solved = system.solve(w, uv, m_solver_traits, threads, !best_uv.empty());
       internal::Flat_stretch_summary s;
       if(solved)
         s = stretch.evaluate(dc.flat, uv, threads);
+      const bool screened_out = solved && system.screened() && s.flipped == 0 &&
+                                internal::Stopping_rule::clearly_raises(s.l2, rep.history[rep.kept_step].l2_stretch);
+      if(solved && system.screened() && !screened_out) {
+        solved = system.refine(w, uv, m_solver_traits, threads);
+        if(solved)
+          s = stretch.evaluate(dc.flat, uv, threads);
+      }
       if(solved && s.flipped > 0 && system.multigrid()) {
         // the flip may be the error of the multigrid solution, exact only up to a tolerance:
         // the direct solver settles it, for this step and the next ones
@@ -513,12 +527,14 @@ private:
       Stretch_minimizing_step step = internal::make_step(h, s, start);
       step.eta = h == 0 ? 0. : eta;
       step.solver_iterations = system.solver_iterations();
+      step.screened = screened_out;
       rep.history.push_back(step);
       rep.degenerate_3d_faces = s.degenerate_3d;
       if(settings.verbose)
         std::cerr << "stretch minimization: step " << h << "  eta " << step.eta << "  L2 " << s.l2
                   << "  Linf " << s.linf << "  flipped " << s.flipped << "  degenerate "
-                  << s.degenerate_uv << "  solver iterations " << step.solver_iterations << "  " << step.seconds << " s"
+                  << s.degenerate_uv << "  solver iterations " << step.solver_iterations
+                  << (step.screened ? " (screened)" : "") << "  " << step.seconds << " s"
                   << std::endl;
 
       const bool valid = s.flipped == 0 && std::isfinite(s.l2) && s.l2 > 0.;

@@ -4,9 +4,12 @@
 #ifndef CGAL_SMP_INTERNAL_AGGREGATION_MULTIGRID_H
 #define CGAL_SMP_INTERNAL_AGGREGATION_MULTIGRID_H
 
+#include <CGAL/Surface_mesh_parameterization/internal/parallel_for.h>
+
 #include <Eigen/Sparse>
 #include <Eigen/SparseLU>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -40,10 +43,11 @@ public:
     std::vector<Eigen::VectorXd> x, b; // solution and right-hand side per coarse level (from 1)
   };
 
-  // Builds the hierarchy of `A` (square, nonzero diagonal). False if a level cannot be built
-  // (a zero or non-finite diagonal entry, a coarsest matrix SparseLU cannot factor).
+  // Builds the hierarchy of `A` (square, nonzero diagonal), its products on up to `threads`
+  // threads (the hierarchy is the same on any number). False if a level cannot be built (a zero
+  // or non-finite diagonal entry, a coarsest matrix SparseLU cannot factor).
   template <typename Matrix>
-  bool compute(const Matrix& A)
+  bool compute(const Matrix& A, unsigned int threads = 1)
   {
     release();
     Row_matrix level = A;
@@ -61,8 +65,8 @@ public:
       }
       l.P = smoothed_prolongation(l.A, l.inv_diag, aggregate, n_coarse);
       l.R = l.P.transpose();
-      const Row_matrix AP = l.A * l.P;
-      level = l.R * AP;
+      const Row_matrix AP = product(l.A, l.P, threads);
+      level = product(l.R, AP, threads);
       level.prune(0.);
       m_levels.push_back(std::move(l));
       threshold *= 0.5; // coarse levels are denser and more evenly coupled
@@ -72,6 +76,66 @@ public:
     m_coarse_lu = std::make_unique<Coarse_lu>();
     m_coarse_lu->compute(coarsest);
     return m_coarse_lu->info() == Eigen::Success;
+  }
+
+  // X Y, with the entries of each row summed in the order of X's row. Row by row (Gustavson):
+  // a row of X gathers the rows of Y it names into a dense accumulator. Eigen's sparse product
+  // (for these row-major operands) took most of the setup; this one also runs on threads, each
+  // on its own range of rows, and gives the same matrix on any number of them.
+  static Row_matrix product(const Row_matrix& X, const Row_matrix& Y, unsigned int threads)
+  {
+    typedef Row_matrix::StorageIndex Index;
+    struct Rows
+    {
+      std::vector<Index> end, inner; // end of each row in inner
+      std::vector<double> values;
+    };
+    const std::size_t n = std::size_t(X.rows());
+    const std::size_t chunks = (std::max)(std::size_t(1), (std::min)(std::size_t(threads), n / parallel_grain));
+    std::vector<Rows> part(chunks);
+    parallel_for_each(chunks, threads, [&](std::size_t c) {
+      Rows& out = part[c];
+      std::vector<double> sum(std::size_t(Y.cols()), 0.);
+      std::vector<std::size_t> last_row(std::size_t(Y.cols()), n); // the row that last wrote sum[j]
+      const std::size_t begin = n * c / chunks, end = n * (c + 1) / chunks;
+      // the products of the hierarchy (A P, R A P) have fewer entries than X
+      out.inner.reserve(std::size_t(X.nonZeros()) / chunks);
+      out.values.reserve(out.inner.capacity());
+      out.end.reserve(end - begin);
+      for(std::size_t i = begin; i < end; ++i) {
+        const std::size_t first = out.inner.size();
+        for(Row_matrix::InnerIterator x(X, Eigen::Index(i)); x; ++x)
+          for(Row_matrix::InnerIterator y(Y, x.col()); y; ++y) {
+            const std::size_t j = std::size_t(y.col());
+            if(last_row[j] != i) {
+              last_row[j] = i;
+              sum[j] = 0.;
+              out.inner.push_back(Index(j));
+            }
+            sum[j] += x.value() * y.value();
+          }
+        std::sort(out.inner.begin() + std::ptrdiff_t(first), out.inner.end());
+        for(std::size_t k = first; k < out.inner.size(); ++k)
+          out.values.push_back(sum[std::size_t(out.inner[k])]);
+        out.end.push_back(Index(out.inner.size()));
+      }
+    });
+    std::size_t nonzeros = 0;
+    for(const Rows& r : part)
+      nonzeros += r.inner.size();
+    Row_matrix result(X.rows(), Y.cols());
+    result.resizeNonZeros(Eigen::Index(nonzeros));
+    Index* outer = result.outerIndexPtr();
+    std::size_t row = 0, at = 0;
+    outer[0] = 0;
+    for(const Rows& r : part) {
+      for(Index e : r.end)
+        outer[++row] = Index(at) + e;
+      std::copy(r.inner.begin(), r.inner.end(), result.innerIndexPtr() + at);
+      std::copy(r.values.begin(), r.values.end(), result.valuePtr() + at);
+      at += r.inner.size();
+    }
+    return result;
   }
 
   // the matrix given to `compute()`

@@ -28,6 +28,12 @@ struct Stopping_rule
   // rounding is no decrease (it would only prolong the iteration).
   static bool lowers(double l2, double kept_l2) { return l2 < kept_l2 * (1. - 1e-10); }
 
+  // Whether a step whose map was solved only approximately, with stretch `l2`, surely does not
+  // lower the kept `kept_l2`: it raises it by more than the error of that stretch can be (a
+  // hundredfold margin over the largest error measured, see test_stretch_minimizing).
+  static bool clearly_raises(double l2, double kept_l2) { return l2 > kept_l2 * (1. + screening_margin); }
+  static constexpr double screening_margin = 1e-2;
+
   // Why the iteration stops after step h, or NOT_RUN to go on. `valid`: step h has no flipped
   // face and a finite stretch; `better`: it is valid and lowers the kept stretch (or is the
   // first valid step); `kept`: a valid step is kept; `eta`: the eta of step h; `go_on`: the

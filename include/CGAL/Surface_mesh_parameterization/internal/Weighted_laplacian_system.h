@@ -123,13 +123,17 @@ public:
   // Whether the next solve is by the multigrid solver.
   bool multigrid() const { return m_multigrid; }
 
-  // The iterations of the last solve if the multigrid solver gave it, else 0 (a factorization).
-  std::size_t solver_iterations() const { return m_multigrid ? m_multigrid_solver.iterations() : 0; }
+  // The multigrid iterations of the last solve and its refinement if any, 0 after a factorization.
+  std::size_t solver_iterations() const { return m_multigrid ? m_iterations : 0; }
+
+  // Whether the last solve stopped at the multigrid solver's screening tolerance (see `solve()`).
+  bool screened() const { return m_screened; }
 
   // The next solves are by the direct solver.
   void use_direct_solver()
   {
     m_multigrid = false;
+    m_built = m_screened = false;
     m_multigrid_solver.release();
   }
 
@@ -137,8 +141,14 @@ public:
   // the border entries of `uv` are read. Unless the system is factored by the Cholesky, `w`
   // comes back divided by the weight sums of the rows. The rows are filled, and the u and v
   // columns solved, on up to `threads` threads. Returns false if the solver fails.
-  bool solve(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads = 1)
+  // With `screen`, the multigrid solver stops at its screening tolerance (a map good enough to
+  // tell whether it raises the stretch), and `refine()` then takes it to the full tolerance;
+  // direct solvers solve fully either way.
+  bool solve(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads = 1,
+             bool screen = false)
   {
+    m_iterations = 0;
+    m_screened = m_built = false;
     const Eigen::Index n = m_A.rows();
     if(n == 0)
       return true;
@@ -167,20 +177,45 @@ public:
     for(std::size_t k = 0; k < m_border_entries.size(); ++k)
       m_border_weight[k] = w[m_border_entries[k]];
 
-    if(!solve_system(w, uv, traits, threads) || !m_X.allFinite())
+    return solve_system(w, uv, traits, threads, screen);
+  }
+
+  // Takes a screened solution (see `solve()`) to the full tolerance, with the weights `w` as
+  // `solve()` gave them back, and writes it into `uv`; does nothing after a full solve.
+  bool refine(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads = 1)
+  {
+    if(!m_screened)
+      return true;
+    m_screened = false;
+    return solve_system(w, uv, traits, threads, false);
+  }
+
+private:
+  // the solution of the system as filled into m_X and the interior rows of `uv`, by the solver
+  // this system uses now (with `screen`, see `solve()`)
+  bool solve_system(std::vector<double>& w, std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads,
+                    bool screen)
+  {
+    if(!solve_by_current_solver(w, uv, traits, threads, screen) || !m_X.allFinite())
       return false;
-    for(Eigen::Index i = 0; i < n; ++i)
+    for(Eigen::Index i = 0; i < m_A.rows(); ++i)
       uv[m_dc.interior[i]] = {m_X(i, 0), m_X(i, 1)};
     return true;
   }
 
-private:
-  // m_X = the solution of the system as filled, by the solver this system uses now
-  bool solve_system(std::vector<double>& w, const std::vector<Vec2>& uv, SolverTraits& traits, unsigned int threads)
+  bool solve_by_current_solver(std::vector<double>& w, const std::vector<Vec2>& uv, SolverTraits& traits,
+                               unsigned int threads, bool screen)
   {
     if(m_multigrid) {
-      if(m_multigrid_solver.compute(m_A) && m_multigrid_solver.solve(right_hand_side(uv), m_X, threads))
+      // a refinement goes on with the hierarchy and the iteration of the screening solve
+      const bool resume = m_built;
+      m_built = m_built || m_multigrid_solver.compute(m_A, threads);
+      const double tolerance = screen ? Multigrid_solver::screening_tolerance : Multigrid_solver::tolerance;
+      if(m_built && m_multigrid_solver.solve(right_hand_side(uv), m_X, threads, tolerance, resume)) {
+        m_iterations = m_multigrid_solver.iterations();
+        m_screened = screen;
         return true;
+      }
       use_direct_solver(); // and for the rest of the call: this system is hard for it
     }
     if(m_cholesky)
@@ -311,6 +346,9 @@ private:
   std::vector<int> m_border_entries; // ring entries whose neighbour is on the border
   std::vector<double> m_border_weight; // their normalized weights
   Eigen::MatrixXd m_X;
+  std::size_t m_iterations = 0; // of the multigrid solver since the matrix was filled
+  bool m_screened = false;      // m_X is a screening solution
+  bool m_built = false;         // the multigrid hierarchy is that of the matrix as filled
   bool m_repeated_neighbour = false;
   bool m_analysed = false;
 };
