@@ -27,7 +27,7 @@ struct Stretch_minimizing_step
   std::size_t degenerate_uv_faces = 0; ///< faces of zero parameter area (e.g. border ears)
   double seconds = 0.;                 ///< wall time since the start of the call
   std::size_t solver_iterations = 0;   ///< iterations of the package's iterative (multigrid) solver for \f$ U^h \f$, the most of the u and v columns; 0 when the system was factored (or the previous map already solved it)
-  bool screened = false;               ///< \f$ U^h \f$ was solved by the multigrid solver only far enough to show that it raises the stretch of the kept step by more than 1% (to a residual of \f$ 10^{-6} \f$ times the right-hand side's): the figures of this step are those of that approximate map, its stretch that of the full solve to \f$ 10^{-5} \f$ (tested; the paper's rejected last step, on large meshes)
+  bool screened = false;               ///< \f$ U^h \f$ was solved by the multigrid solver only far enough to show that it raises the stretch of the kept step by more than 1% (to a residual of \f$ 10^{-6} \f$ times the right-hand side's): the figures of this step are those of that approximate map, its stretch within \f$ 3 \cdot 10^{-5} \f$ (relative) of the full solve's on the meshes measured (the paper's rejected last step, on large meshes)
   bool polish = false;                 ///< a step of the polish stage (`step` counts from 1 there)
   bool descent = false;                ///< a descent step of the polish stage, before its Newton steps
 };
