@@ -3,7 +3,7 @@
 //
 // How the tools read a mesh file (OFF, OBJ, PLY, STL: CGAL's readers, by the file's extension;
 // a plain ASCII OFF file by read_plain_off(), faster; a PLY file of triangle strips by
-// smp_ply_strips.h),
+// smp_ply_strips.h; an OBJ file's polylines left out, which CGAL's reader refuses),
 // shared with the fuzz harness so that it tests what users run. A file that cannot be read
 // gives a message, never an exception: an OFF or PLY file is checked first where CGAL 5.5.1's
 // readers would misbehave (see check_off() and smp_ply_check.h), and an exception from a reader
@@ -261,48 +261,169 @@ inline bool check_before_reading(const std::string& file, std::string& error)
   return false;
 }
 
-// The text of an OBJ file whose lines go on after a backslash at their end (as some modellers
-// write long faces), with those lines joined, in `joined`; false if it has none (or cannot be
-// read), which CGAL's reader then takes as it is.
-inline bool join_continued_obj_lines(const std::string& file, std::string& joined)
+// Whether an OBJ statement (by its keyword, the first word of its line) holds no polygon and is
+// refused by CGAL's reader: polylines (`l`, as modellers write loose edges), merging groups
+// (`mg`) and texture map libraries (`maplib`).
+inline bool obj_statement_left_out(const std::string& keyword)
+{
+  return keyword == "l" || keyword == "mg" || keyword == "maplib";
+}
+
+// The text of an OBJ file as CGAL's reader takes it, in `text`: the lines that go on after a
+// backslash at their end (as some modellers write long faces) joined, and the statements of
+// obj_statement_left_out() emptied (their lines kept, so that lines keep their numbers). False
+// if there is nothing to change (or the file cannot be read): CGAL's reader then takes the
+// file as it is.
+inline bool obj_text_for_cgal(const std::string& file, std::string& text)
 {
   if(lower_extension(file) != ".obj")
     return false;
   std::ifstream in(file, std::ios::binary);
-  // a first pass looks for a continued line, holding a block at a time
-  bool found = false;
+  // a first pass looks for a continued line or a statement to leave out, a block at a time
+  bool found = false, line_start = true; // line_start: the line's first word is not over yet
+  std::string word;
   char last = '\0', before = '\0';
   std::vector<char> block(1 << 16);
   while(!found && in) {
     in.read(block.data(), std::streamsize(block.size()));
     for(std::streamsize i = 0; i < in.gcount() && !found; ++i) {
       const char c = block[std::size_t(i)];
-      found = c == '\n' && (last == '\\' || (last == '\r' && before == '\\'));
+      if(c == '\n') {
+        found = (last == '\\' || (last == '\r' && before == '\\')) || (line_start && obj_statement_left_out(word));
+        line_start = true;
+        word.clear();
+      } else if(line_start) {
+        if(c == ' ' || c == '\t' || c == '\r') {
+          if(!word.empty()) {
+            found = obj_statement_left_out(word);
+            line_start = false;
+          }
+        } else if(word.size() < 8) {
+          word.push_back(c);
+        } else {
+          line_start = false;
+        }
+      }
       before = last;
       last = c;
     }
   }
-  if(!found)
+  if(!found && !(line_start && obj_statement_left_out(word)))
     return false;
   in.clear();
   in.seekg(0);
-  joined.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  bool any = false;
-  std::size_t kept = 0;
-  for(std::size_t i = 0; i < joined.size(); ++i) {
-    if(joined[i] == '\\') {
-      const std::size_t end = i + 1 < joined.size() && joined[i + 1] == '\r' ? i + 2 : i + 1;
-      if(end < joined.size() && joined[end] == '\n') {
-        joined[kept++] = ' ';
-        i = end;
-        any = true;
-        continue;
+  const std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  text.clear();
+  text.reserve(raw.size());
+  // line by line: a continued line joined to the next (its newlines kept at its end, so that the
+  // next statement keeps its line number), its first word read
+  for(std::size_t i = 0; i < raw.size();) {
+    std::string line;
+    std::size_t newlines = 0;
+    for(; i < raw.size(); ++i) {
+      if(raw[i] == '\\') {
+        const std::size_t end = i + 1 < raw.size() && raw[i + 1] == '\r' ? i + 2 : i + 1;
+        if(end < raw.size() && raw[end] == '\n') {
+          line.push_back(' ');
+          ++newlines;
+          i = end;
+          continue;
+        }
+      }
+      if(raw[i] == '\n') {
+        ++i;
+        ++newlines;
+        break;
+      }
+      line.push_back(raw[i]);
+    }
+    const std::size_t first = line.find_first_not_of(" \t");
+    const std::size_t after = first == std::string::npos ? first : line.find_first_of(" \t\r", first);
+    const std::string keyword = first == std::string::npos ? std::string() : line.substr(first, after - first);
+    if(!obj_statement_left_out(keyword))
+      text += line;
+    text.append(newlines, '\n');
+  }
+  return true;
+}
+
+// `bytes` with those that are not printable ASCII (another encoding, a binary file) as \xNN.
+inline std::string printable(const std::string& bytes)
+{
+  static const char hex[] = "0123456789abcdef";
+  std::string shown;
+  for(const char c : bytes) {
+    const unsigned char u = static_cast<unsigned char>(c);
+    shown += std::isprint(u) ? std::string(1, c) : std::string("\\x") + hex[u >> 4] + hex[u & 15];
+  }
+  return shown;
+}
+
+// Why CGAL's reader refused the OBJ file `file`, from its first statement that is not one of
+// the format's, or its first face with an index that is not a vertex's (0, or beyond the
+// vertices: counted from 1, from the end if negative), or the want of any face: "line N: ...";
+// empty if none of these is found.
+inline std::string obj_read_error(const std::string& file)
+{
+  static const char* const keywords[] = {
+      "v", "vt", "vn", "vp", "f", "l", "p", "o", "g", "s", "mg", "usemtl", "mtllib", "usemap", "maplib",
+      "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end",
+      "con", "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech",
+      "bsp", "bzp", "cdc", "cdp", "res", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2", "q0_2", "q1_2", "curv2d_2"};
+  std::ifstream in(file, std::ios::binary);
+  std::string line, more;
+  std::size_t number = 0, vertices = 0, faces = 0;
+  // (line, index) of the first index beyond the vertices before it (a reference forward, which
+  // CGAL's reader takes), and of the largest index: either may be beyond the file's vertices
+  std::pair<std::size_t, long long> forward(0, 0), largest(0, 0);
+  while(std::getline(in, line)) {
+    const std::size_t at = ++number;
+    // a line that goes on after a backslash at its end, joined to the next
+    for(;;) {
+      if(!line.empty() && line.back() == '\r')
+        line.pop_back();
+      if(line.empty() || line.back() != '\\' || !std::getline(in, more))
+        break;
+      line.back() = ' ';
+      line += more;
+      ++number;
+    }
+    std::istringstream words(line);
+    std::string keyword;
+    if(!(words >> keyword) || keyword[0] == '#')
+      continue;
+    if(std::find_if(std::begin(keywords), std::end(keywords), [&keyword](const char* k) { return keyword == k; }) ==
+       std::end(keywords))
+      return "line " + std::to_string(at) + ": '" + printable(keyword.substr(0, 32)) +
+             "' is not a statement of the OBJ format";
+    if(keyword == "v") {
+      ++vertices;
+    } else if(keyword == "f") {
+      ++faces;
+      std::string corner;
+      while(words >> corner) {
+        long long index = 0;
+        const std::string digits = corner.substr(0, corner.find('/'));
+        const auto parsed = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+        if(parsed.ec != std::errc() || parsed.ptr != digits.data() + digits.size())
+          return "line " + std::to_string(at) + ": the face corner '" + printable(corner.substr(0, 32)) +
+                 "' has no vertex index";
+        if(index == 0 || (index < 0 && -(index + 1) >= static_cast<long long>(vertices))) // -index > vertices
+          return "line " + std::to_string(at) + ": the face index " + digits + " is not that of a vertex";
+        if(index > 0 && forward.first == 0 && std::size_t(index) > vertices)
+          forward = {at, index};
+        if(index > largest.second)
+          largest = {at, index};
       }
     }
-    joined[kept++] = joined[i];
   }
-  joined.resize(kept);
-  return any;
+  for(const auto& beyond : {forward, largest})
+    if(beyond.second > 0 && std::size_t(beyond.second) > vertices)
+      return "line " + std::to_string(beyond.first) + ": the face index " + std::to_string(beyond.second) +
+             " is beyond the file's " + std::to_string(vertices) + " vertices";
+  if(faces == 0)
+    return "no polygon: no face statement (f) among its " + std::to_string(number) + " lines";
+  return std::string();
 }
 
 // The polygons of `file`: a plain OFF file read by read_plain_off(), any other by CGAL's reader
@@ -320,12 +441,24 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
     polygons.clear();
     if(!check_before_reading(file, error))
       return false;
-    std::string joined;
-    if(join_continued_obj_lines(file, joined)) {
-      std::istringstream in(joined);
-      return CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+    std::string text;
+    bool read = false;
+    if(obj_text_for_cgal(file, text)) {
+      std::istringstream in(text);
+      read = CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+    } else {
+      read = CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
     }
-    const bool read = CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
+    // CGAL's reader takes an index 0 (and makes it one beyond the points)
+    const auto outside = [&points](const std::vector<std::size_t>& polygon) {
+      return std::any_of(polygon.begin(), polygon.end(), [&points](std::size_t v) { return v >= points.size(); });
+    };
+    if(lower_extension(file) == ".obj" && (!read || std::any_of(polygons.begin(), polygons.end(), outside))) {
+      const std::string why = obj_read_error(file);
+      if(!why.empty())
+        error = "cannot read " + file + ": " + why;
+      return false;
+    }
     if(read && polygons.empty() && lower_extension(file) == ".ply" && ply_has_triangle_strips(file))
       return read_ply_triangle_strips(file, points, polygons, error);
     return read;

@@ -498,6 +498,34 @@ void check_obj_continued_lines()
   SMP_CHECK(faces == expected, "continued lines: " << faces.size() << " faces written");
 }
 
+// An OBJ file with polylines (`l`), points (`p`) and merging groups (`mg`) beside its faces, as
+// modellers write loose edges (CGAL's reader refuses `l` and `mg` statements): its faces are read,
+// the rest left out. A face index out of range, or a file of lines and points only, is refused
+// with a message that says so.
+void check_obj_other_statements()
+{
+  const std::string points = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0.5 0.5 1\n";
+  std::ofstream("mixed.obj") << "# lines, points and faces\n" << points
+                             << "l 1 2 3 4 1\n  l 1 5\np 5\nmg 1 0.5\nmaplib a.map\nf 1 2 5\nf 2 3 5\n"
+                                "l 3 5\nf 3 4 5\r\nf 4 1 5\nl\t4 5";
+  const Result r = run("mixed.obj --atlas -q --no-pictures -o out_mixed");
+  SMP_CHECK(r.status == 0, "OBJ with lines: " << r.err);
+  const std::vector<std::string> faces = obj_faces("out_mixed/mixed.obj");
+  const std::vector<std::string> expected = {"f 1/1 2/2 5/3", "f 2/4 3/5 5/6", "f 3/7 4/8 5/9", "f 4/10 1/11 5/12"};
+  SMP_CHECK(faces == expected, "OBJ with lines: " << faces.size() << " faces written");
+  // a statement that only starts like a polyline is no polyline
+  std::ofstream("lod.obj") << points << "lx 1 2\nf 1 2 5\n";
+  check_error("OBJ unknown statement", "lod.obj --atlas -o out_lod", "line 6");
+  std::ofstream("lines_only.obj") << points << "l 1 2 3\np 4\n";
+  check_error("OBJ of lines only", "lines_only.obj --atlas -o out_lines_only", "no polygon");
+  std::ofstream("index_out.obj") << points << "l 1 2\nf 1 2 5\nf 2 3 9\n";
+  check_error("OBJ face index out of range", "index_out.obj --atlas -o out_index_out", "line 8");
+  std::ofstream("index_zero.obj") << points << "f 1 2 5\nf 0 3 5\n";
+  check_error("OBJ face index 0", "index_zero.obj --atlas -o out_index_zero", "line 7");
+  SMP_CHECK(!fs::exists("out_index_out") && !fs::exists("out_index_zero") && !fs::exists("out_lod"),
+            "an output written for an OBJ file that cannot be read");
+}
+
 // A vertex of no face is left out (CGAL's parameterization wants a valid polygon mesh), and
 // said so; no temporary file is left in the output folder.
 void check_isolated_vertex()
@@ -749,6 +777,7 @@ int main()
   check_unmapped_component();
   check_errors();
   check_obj_continued_lines();
+  check_obj_other_statements();
   check_ply_triangle_strips();
   check_isolated_vertex();
   check_atlas();
