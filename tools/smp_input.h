@@ -243,22 +243,75 @@ bool read_plain_off(const std::string& file, std::vector<Point>& points, std::ve
   return !next_line();
 }
 
-// False, with a message, if an OFF or PLY file would make CGAL's reader misbehave (see
-// check_off() and smp_ply_check.h); other files pass.
+// The character after the word "solid" that begins an ASCII STL file (after white space, as
+// CGAL's reader skips it), '\n' if the file ends there; '\0' if the file does not begin so.
+inline char stl_after_solid(std::istream& in)
+{
+  char c = ' ';
+  while(in.get(c) && std::isspace(static_cast<unsigned char>(c))) {}
+  std::string word(1, c);
+  for(int i = 0; i < 5 && in.get(c); ++i)
+    word.push_back(c);
+  if(word.size() == 5 && word == "solid")
+    return '\n';
+  return word.size() == 6 && word.compare(0, 5, "solid") == 0 && std::isspace(static_cast<unsigned char>(word[5]))
+             ? word[5]
+             : '\0';
+}
+
+// False, with a message, if a binary STL file (one that does not begin with the word "solid")
+// announces more triangles than its `bytes` hold: CGAL's reader would read on past them.
+inline bool check_stl(std::istream& in, std::uintmax_t bytes, std::string& error)
+{
+  if(stl_after_solid(in) != '\0' || bytes < 84)
+    return true; // ASCII, or a binary file too short for a count, which CGAL's reader refuses
+  unsigned char count[4] = {0, 0, 0, 0};
+  in.clear();
+  in.seekg(80);
+  in.read(reinterpret_cast<char*>(count), 4);
+  const std::uintmax_t triangles = std::uintmax_t(count[0]) | std::uintmax_t(count[1]) << 8 |
+                                   std::uintmax_t(count[2]) << 16 | std::uintmax_t(count[3]) << 24;
+  if(84 + 50 * triangles <= bytes)
+    return true;
+  error = "the binary STL header announces " + std::to_string(triangles) + " triangles, of " +
+          std::to_string(84 + 50 * triangles) + " bytes, in " + std::to_string(bytes) + " bytes";
+  return false;
+}
+
+// False, with a message, if an OFF, PLY or STL file would make CGAL's reader misbehave (see
+// check_off(), smp_ply_check.h and check_stl()); other files pass.
 inline bool check_before_reading(const std::string& file, std::string& error)
 {
   const std::string e = lower_extension(file);
-  if(e != ".off" && e != ".ply")
+  if(e != ".off" && e != ".ply" && e != ".stl")
     return true;
   std::error_code ec;
   const std::uintmax_t bytes = std::filesystem::file_size(file, ec);
   std::ifstream in(file, std::ios::binary);
   if(ec || !in)
     return true; // the reader says what is wrong
-  if(e == ".off" ? check_off(in, bytes, error) : check_ply(in, bytes, error))
+  if(e == ".off" ? check_off(in, bytes, error) : e == ".ply" ? check_ply(in, bytes, error) : check_stl(in, bytes, error))
     return true;
   error = "cannot read " + file + ": " + error;
   return false;
+}
+
+// The text of an ASCII STL file whose word "solid" is followed by white space other than a space
+// or a line's end (a tab, as some writers put before the name), with a space there instead, in
+// `text`: CGAL's reader takes such a file for a binary one. False for any other file.
+inline bool stl_text_for_cgal(const std::string& file, std::string& text)
+{
+  if(lower_extension(file) != ".stl")
+    return false;
+  std::ifstream in(file, std::ios::binary);
+  const char after = stl_after_solid(in);
+  if(after == '\0' || after == ' ' || after == '\n' || after == '\r')
+    return false;
+  in.clear();
+  in.seekg(0);
+  text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  text[text.find("solid") + 5] = ' ';
+  return true;
 }
 
 // Whether an OBJ statement (by its keyword, the first word of its line) holds no polygon and is
@@ -446,6 +499,9 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
     if(obj_text_for_cgal(file, text)) {
       std::istringstream in(text);
       read = CGAL::IO::read_OBJ(in, points, polygons, CGAL::parameters::verbose(false));
+    } else if(stl_text_for_cgal(file, text)) {
+      std::istringstream in(text);
+      read = CGAL::IO::read_STL(in, points, polygons, CGAL::parameters::verbose(false));
     } else {
       read = CGAL::IO::read_polygon_soup(file, points, polygons, CGAL::parameters::verbose(false));
     }

@@ -526,6 +526,43 @@ void check_obj_other_statements()
             "an output written for an OBJ file that cannot be read");
 }
 
+// An ASCII STL file whose first line is "solid", a tab and its name (as assimp's sphereWithHole.stl):
+// CGAL's reader takes it for a binary file and reads garbage; read as ASCII. A binary STL file
+// that announces more triangles than it holds is refused.
+void check_stl_headers()
+{
+  std::ofstream("tab.stl") << "solid\ttab\n"
+                              "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\nendfacet\n"
+                              "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\n"
+                              "endsolid tab\n";
+  const Result r = run("tab.stl --atlas -q --no-pictures -o out_tab");
+  SMP_CHECK(r.status == 0, "STL with a tab after solid: " << r.err);
+  SMP_CHECK(obj_faces("out_tab/tab.obj").size() == 2, "STL with a tab after solid: faces written");
+  std::string v; // a vertex line of the OBJ file, of the input's coordinates
+  std::ifstream obj("out_tab/tab.obj");
+  bool in_range = true;
+  while(std::getline(obj, v))
+    if(v.rfind("v ", 0) == 0) {
+      std::istringstream xyz(v.substr(2));
+      double x = -1., y = -1., z = -1.;
+      xyz >> x >> y >> z;
+      in_range = in_range && x >= 0. && x <= 1. && y >= 0. && y <= 1. && z == 0.;
+    }
+  SMP_CHECK(in_range, "STL with a tab after solid: vertices not the file's");
+  std::string binary(80, 'x'); // a header, a count of 1000 triangles, and two of them
+  const std::uint32_t count = 1000;
+  for(int k = 0; k < 4; ++k)
+    binary.push_back(char((count >> (8 * k)) & 0xff));
+  const float triangles[2][12] = {{0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 0}, {0, 0, 1, 0, 0, 0, 1, 1, 0, 0, 1, 0}};
+  for(const auto& t : triangles) {
+    binary.append(reinterpret_cast<const char*>(t), sizeof(t));
+    binary.append(2, '\0');
+  }
+  std::ofstream("short.stl", std::ios::binary) << binary;
+  check_error("binary STL shorter than its count", "short.stl --atlas -o out_short", "1000 triangles");
+  SMP_CHECK(!fs::exists("out_short"), "an output written for a binary STL file shorter than its count");
+}
+
 // A vertex of no face is left out (CGAL's parameterization wants a valid polygon mesh), and
 // said so; no temporary file is left in the output folder.
 void check_isolated_vertex()
@@ -778,6 +815,7 @@ int main()
   check_errors();
   check_obj_continued_lines();
   check_obj_other_statements();
+  check_stl_headers();
   check_ply_triangle_strips();
   check_isolated_vertex();
   check_atlas();
