@@ -1956,6 +1956,43 @@ void polygon_laid_out_by_triangles()
   }
 }
 
+// A planar polygon with a hole, written as one polygon that runs round the outline, along a
+// bridge to the hole, round the hole the other way and back along the bridge (as LightWave and
+// some CAD exporters write them, e.g. assimp's concave_polygon.obj): triangulated as the region
+// between the two (not as two overlapping disks), one chart laid out as the plane is, the bridge
+// no seam. Found laid out triangle by triangle, its corners' uv from sixty charts.
+void keyhole_polygon()
+{
+  const std::vector<Point> points = {Point(0, 0, 1), Point(4, 0, 1), Point(4, 4, 1), Point(0, 4, 1),
+                                     Point(1, 1, 1), Point(1, 3, 1), Point(3, 3, 1), Point(3, 1, 1)};
+  const std::vector<Polygon> polygons = {{0, 1, 2, 3, 0, 4, 5, 6, 7, 4}};
+  const SMP::Atlas a = SMP::make_atlas(points, polygons, SMP::parameters::number_of_threads(1u));
+  SMP_CHECK(a.report.status == SMP::OK && a.report.charts == 1 && a.report.flipped_faces == 0 &&
+                a.report.l2_stretch < 1. + 1e-6 && a.report.seam_length == 0.,
+            "keyhole polygon: status " << int(a.report.status) << ", " << a.report.charts << " charts, L2 "
+            << a.report.l2_stretch << ", seams " << a.report.seam_length);
+  if(a.uv.size() != 1 || a.uv[0].size() != polygons[0].size())
+    return;
+  // the corners' uv are the polygon's points moved, turned and scaled alike (the conformal map,
+  // kept as it is this near an isometry: to a part in a hundred): every distance between two
+  // corners in the same ratio to the points', and the uv outline's area 12 of them
+  const auto& uv = a.uv[0];
+  const std::size_t n = uv.size();
+  const auto uv_distance = [&uv](std::size_t i, std::size_t j) { return std::hypot(uv[i][0] - uv[j][0], uv[i][1] - uv[j][1]); };
+  const double scale = uv_distance(0, 1) / 4.;
+  double worst = 0., area = 0.;
+  for(std::size_t i = 0; i < n; ++i) {
+    for(std::size_t j = 0; j < n; ++j) {
+      const double d = std::sqrt(CGAL::squared_distance(points[polygons[0][i]], points[polygons[0][j]]));
+      worst = (std::max)(worst, std::abs(uv_distance(i, j) - scale * d));
+    }
+    area += uv[i][0] * uv[(i + 1) % n][1] - uv[(i + 1) % n][0] * uv[i][1];
+  }
+  SMP_CHECK(scale > 0. && worst < 0.04 * scale && std::abs(std::abs(0.5 * area) / (scale * scale) - 12.) < 0.12,
+            "keyhole polygon: uv not the plane's: distances off by " << worst / scale << ", area "
+            << 0.5 * area / (scale * scale) << " for 12");
+}
+
 // A two-sided surface (every polygon also there turned over, as game assets and some CAD
 // exports have it) or one whose polygons are all listed twice: each copy of the surface is
 // charted as the surface alone would be, instead of every edge with four sides cutting every
@@ -2176,6 +2213,7 @@ int run_test(int argc, char** argv)
   only_flat_polygons();
   repeated_polygons();
   polygon_laid_out_by_triangles();
+  keyhole_polygon();
   disk_and_torus_chart();
   scaled_soups();
   progress();

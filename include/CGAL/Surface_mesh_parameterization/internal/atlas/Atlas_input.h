@@ -285,19 +285,16 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
       ring_begin.push_back(sorted_rings.size());
       continue;
     }
-    // each simple loop triangulated; a triangle covered twice (in any orientation) kept once
+    // a ring that passes a vertex again: the planar region it bounds if it is one (a polygon
+    // with holes written as one, see triangulate_planar_ring()), else each simple loop
+    // triangulated; a triangle covered twice (in any orientation) kept once
     split_into_simple_loops(ring, ring_corner, loops);
     bool any = false;
     seen.clear();
-    for(const auto& loop : loops) {
-      if(loop.first.size() < 3)
-        continue; // a walk there and back: no area
-      ring_xyz.clear();
-      for(int v : loop.first)
-        ring_xyz.push_back(out.xyz[std::size_t(v)]);
-      triangulate_polygon(ring_xyz, pieces);
+    // the triangles `pieces` of positions along `loop` (vertices, corners)
+    const auto add_pieces = [&](const std::vector<int>& loop, const std::vector<int>& loop_corner) {
       for(const auto& t : pieces) {
-        const std::array<int, 3> v = {loop.first[t[0]], loop.first[t[1]], loop.first[t[2]]};
+        const std::array<int, 3> v = {loop[t[0]], loop[t[1]], loop[t[2]]};
         if(too_small(out.xyz[std::size_t(v[0])], out.xyz[std::size_t(v[1])], out.xyz[std::size_t(v[2])]))
           continue;
         std::array<int, 3> key = v;
@@ -306,8 +303,24 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
           continue;
         out.vertex.push_back(v);
         out.polygon.push_back(index);
-        out.corner.push_back({loop.second[t[0]], loop.second[t[1]], loop.second[t[2]]});
+        out.corner.push_back({loop_corner[t[0]], loop_corner[t[1]], loop_corner[t[2]]});
         any = true;
+      }
+    };
+    ring_xyz.clear();
+    for(int v : ring)
+      ring_xyz.push_back(out.xyz[std::size_t(v)]);
+    if(loops.size() > 1 && triangulate_planar_ring(ring_xyz, ring, pieces)) {
+      add_pieces(ring, ring_corner);
+    } else {
+      for(const auto& loop : loops) {
+        if(loop.first.size() < 3)
+          continue; // a walk there and back: no area
+        ring_xyz.clear();
+        for(int v : loop.first)
+          ring_xyz.push_back(out.xyz[std::size_t(v)]);
+        triangulate_polygon(ring_xyz, pieces);
+        add_pieces(loop.first, loop.second);
       }
     }
     if(!any) {

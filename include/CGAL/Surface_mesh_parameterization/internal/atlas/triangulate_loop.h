@@ -27,6 +27,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
+#include <map>
 #include <queue>
 #include <set>
 #include <tuple>
@@ -132,16 +134,16 @@ bool new_sides_allowed(const std::vector<Loop_triangle>& t, std::size_t n, const
   return true;
 }
 
-// The constrained Delaunay triangulation of the loop `p` projected on the plane of its Newell
-// normal, each triangle in the loop's orientation, if the loop is nearly planar (its mean
-// squared distance to that plane at most (extent / 4)^2, the largest side of its bounding box
-// as `extent`: CGAL's rule with the box's largest side for its height, so that it does not
-// depend on how the loop lies in space) and its projection is a simple polygon. The projected
-// points are rounded once; every decision after is CGAL's exact predicates on them, so that a
-// degenerate loop is found not simple instead of breaking the triangulation.
-inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop_triangle>& out)
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Loop_kernel;
+
+// The points `p` of a loop projected on the plane of its mean normal (centred, scaled to a unit
+// box, the loop turning counterclockwise about the normal), in `plane`, if the loop is nearly
+// planar: its mean squared distance to that plane at most (extent / 4)^2, the largest side of
+// its bounding box as `extent` (CGAL's rule with the box's largest side for its height, so that
+// it does not depend on how the loop lies in space). The points are rounded once here; every
+// decision after is CGAL's exact predicates on them.
+inline bool project_nearly_planar_loop(const std::vector<Vec3>& p, std::vector<Loop_kernel::Point_2>& plane)
 {
-  out.clear();
   const std::size_t n = p.size();
   if(n < 3)
     return false;
@@ -198,7 +200,25 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
     c /= u_length;
   const Vec3 v = cross3(normal, u);
 
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  plane.clear();
+  plane.reserve(n);
+  for(std::size_t j = 0; j < n; ++j)
+    plane.emplace_back(dot3(q[j], u), dot3(q[j], v));
+  return true;
+}
+
+// The constrained Delaunay triangulation of the loop `p` projected on its plane, each triangle in
+// the loop's orientation, if the loop is nearly planar (project_nearly_planar_loop()) and its
+// projection is a simple polygon (decided exactly on the rounded points, so that a degenerate
+// loop is found not simple instead of breaking the triangulation).
+inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop_triangle>& out)
+{
+  out.clear();
+  const std::size_t n = p.size();
+  std::vector<Loop_kernel::Point_2> polygon;
+  if(!project_nearly_planar_loop(p, polygon))
+    return false;
+  typedef Loop_kernel K;
   typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
   typedef CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<bool, K> > Fb;
   typedef CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>,
@@ -207,10 +227,7 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
   std::vector<std::pair<K::Point_2, int> > plane;
   plane.reserve(n);
   for(std::size_t j = 0; j < n; ++j)
-    plane.emplace_back(K::Point_2(dot3(q[j], u), dot3(q[j], v)), int(j));
-  std::vector<K::Point_2> polygon;
-  for(const auto& x : plane)
-    polygon.push_back(x.first);
+    plane.emplace_back(polygon[j], int(j));
   if(!CGAL::is_simple_2(polygon.begin(), polygon.end(), K()))
     return false;
   Cdt cdt;
@@ -244,6 +261,83 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
       out.push_back(ccw ? t : Loop_triangle{{t[0], t[2], t[1]}});
     }
   return out.size() == n - 2;
+}
+
+// The constrained Delaunay triangulation of the region bounded by a ring that passes some of its
+// vertices twice or more (`id[j]` the vertex at position j, `p[j]` its point): a polygon with
+// holes written as one polygon, which runs along a bridge to each hole, round it and back. The
+// ring is projected as by project_nearly_planar_loop(); its sides run an even number of times
+// (the bridges) bound nothing, the others bound the region, where they wind an odd number of
+// times. Triangles of positions (the first of each vertex), in the ring's orientation. False if
+// the ring is not nearly planar, two of its vertices project to one point, its sides cross, or
+// the triangles do not cover the area the ring winds around (a ring that overlaps itself).
+inline bool triangulate_planar_ring(const std::vector<Vec3>& p, const std::vector<int>& id,
+                                    std::vector<Loop_triangle>& out)
+{
+  out.clear();
+  const std::size_t n = p.size();
+  std::vector<Loop_kernel::Point_2> plane;
+  if(id.size() != n || !project_nearly_planar_loop(p, plane))
+    return false;
+  typedef Loop_kernel K;
+  typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
+  typedef CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<int, K> > Fb;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>,
+                                                     CGAL::No_constraint_intersection_tag>
+      Cdt;
+  std::map<int, int> first; // vertex -> its first position
+  std::vector<std::pair<K::Point_2, int> > points;
+  for(std::size_t j = 0; j < n; ++j)
+    if(first.emplace(id[j], int(j)).second)
+      points.emplace_back(plane[j], int(j));
+  Cdt cdt;
+  cdt.insert(points.begin(), points.end());
+  if(cdt.dimension() != 2 || cdt.number_of_vertices() != points.size())
+    return false;
+  std::vector<Cdt::Vertex_handle> vertex(n);
+  for(Cdt::Vertex_handle h : cdt.finite_vertex_handles())
+    vertex[std::size_t(h->info())] = h;
+  std::map<std::pair<int, int>, int> sides; // (first positions, smaller first) -> times run
+  double twice_area = 0.;
+  for(std::size_t j = 0; j < n; ++j) {
+    const int a = first[id[j]], b = first[id[(j + 1) % n]];
+    ++sides[std::minmax(a, b)];
+    twice_area += plane[j].x() * plane[(j + 1) % n].y() - plane[(j + 1) % n].x() * plane[j].y();
+  }
+  try {
+    for(const auto& side : sides)
+      if(side.second % 2 == 1 && side.first.first != side.first.second)
+        cdt.insert_constraint(vertex[std::size_t(side.first.first)], vertex[std::size_t(side.first.second)]);
+  } catch(const std::exception&) { // two sides cross
+    return false;
+  }
+  // the number of bounding sides crossed from the infinite faces: breadth first, a side at a time
+  for(Cdt::Face_handle f : cdt.all_face_handles())
+    f->info() = -1;
+  std::queue<Cdt::Face_handle> front, beyond;
+  beyond.push(cdt.infinite_face());
+  for(int crossed = 0; !beyond.empty(); ++crossed) {
+    front.swap(beyond);
+    while(!front.empty()) {
+      const Cdt::Face_handle f = front.front();
+      front.pop();
+      if(f->info() >= 0)
+        continue;
+      f->info() = crossed;
+      for(int i = 0; i < 3; ++i)
+        if(f->neighbor(i)->info() < 0)
+          (cdt.is_constrained(Cdt::Edge(f, i)) ? beyond : front).push(f->neighbor(i));
+    }
+  }
+  const bool ccw = twice_area > 0.;
+  double covered = 0.;
+  for(Cdt::Face_handle f : cdt.finite_face_handles())
+    if(f->info() % 2 == 1) {
+      const Loop_triangle t{{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}};
+      out.push_back(ccw ? t : Loop_triangle{{t[0], t[2], t[1]}});
+      covered += std::abs(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+    }
+  return !out.empty() && std::abs(covered - 0.5 * std::abs(twice_area)) <= 1e-9 * covered;
 }
 
 // Triangles over the loop `p` (positions along it, each triangle in the loop's orientation),
