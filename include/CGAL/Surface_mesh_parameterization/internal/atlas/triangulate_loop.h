@@ -135,6 +135,16 @@ bool new_sides_allowed(const std::vector<Loop_triangle>& t, std::size_t n, const
 }
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Loop_kernel;
+// A constrained Delaunay triangulation of the positions along a loop (vertex info), with an
+// integer per face that tells the region it lies in.
+typedef CGAL::Constrained_triangulation_face_base_2<Loop_kernel,
+                                                    CGAL::Triangulation_face_base_with_info_2<int, Loop_kernel> >
+    Loop_face;
+typedef CGAL::Constrained_Delaunay_triangulation_2<
+    Loop_kernel,
+    CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<int, Loop_kernel>, Loop_face>,
+    CGAL::No_constraint_intersection_tag>
+    Loop_cdt;
 
 // The points `p` of a loop projected on the plane of its mean normal (centred, scaled to a unit
 // box, the loop turning counterclockwise about the normal), in `plane`, if the loop is nearly
@@ -219,11 +229,7 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
   if(!project_nearly_planar_loop(p, polygon))
     return false;
   typedef Loop_kernel K;
-  typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
-  typedef CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<bool, K> > Fb;
-  typedef CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>,
-                                                     CGAL::No_constraint_intersection_tag>
-      Cdt;
+  typedef Loop_cdt Cdt;
   std::vector<std::pair<K::Point_2, int> > plane;
   plane.reserve(n);
   for(std::size_t j = 0; j < n; ++j)
@@ -241,22 +247,22 @@ inline bool triangulate_planar_loop(const std::vector<Vec3>& p, std::vector<Loop
     cdt.insert_constraint(vertex[j], vertex[(j + 1) % n]);
   // outside: reached from the infinite faces without crossing the loop
   for(Cdt::Face_handle f : cdt.all_face_handles())
-    f->info() = false;
+    f->info() = 0;
   std::queue<Cdt::Face_handle> front;
   front.push(cdt.infinite_face());
   while(!front.empty()) {
     const Cdt::Face_handle f = front.front();
     front.pop();
-    if(f->info())
+    if(f->info() != 0)
       continue;
-    f->info() = true;
+    f->info() = 1;
     for(int i = 0; i < 3; ++i)
       if(!cdt.is_constrained(Cdt::Edge(f, i)))
         front.push(f->neighbor(i));
   }
   const bool ccw = CGAL::orientation_2(polygon.begin(), polygon.end(), K()) == CGAL::COUNTERCLOCKWISE;
   for(Cdt::Face_handle f : cdt.finite_face_handles())
-    if(!f->info()) {
+    if(f->info() == 0) {
       const Loop_triangle t{{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}};
       out.push_back(ccw ? t : Loop_triangle{{t[0], t[2], t[1]}});
     }
@@ -280,11 +286,7 @@ inline bool triangulate_planar_ring(const std::vector<Vec3>& p, const std::vecto
   if(id.size() != n || !project_nearly_planar_loop(p, plane))
     return false;
   typedef Loop_kernel K;
-  typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
-  typedef CGAL::Constrained_triangulation_face_base_2<K, CGAL::Triangulation_face_base_with_info_2<int, K> > Fb;
-  typedef CGAL::Constrained_Delaunay_triangulation_2<K, CGAL::Triangulation_data_structure_2<Vb, Fb>,
-                                                     CGAL::No_constraint_intersection_tag>
-      Cdt;
+  typedef Loop_cdt Cdt;
   std::map<int, int> first; // vertex -> its first position
   std::vector<std::pair<K::Point_2, int> > points;
   for(std::size_t j = 0; j < n; ++j)
