@@ -71,27 +71,33 @@ int run_atlas(const Options& o)
   }
   const double write_seconds = seconds_since(t2);
 
-  // ---- pictures: the polygons as fans, coloured by the stretch of their triangles and by chart
+  // ---- pictures: the polygons split as the atlas split them (a fan where one turns like the
+  // polygon, else the region it bounds: a fan from a corner draws a non-convex polygon wrong),
+  // coloured by the stretch of their triangles and by chart
   const auto t3 = std::chrono::steady_clock::now();
   if(o.pictures) {
     smp_tools::Textured_mesh picture;
     for(const Point_3& p : points)
       picture.xyz.push_back({p.x(), p.y(), p.z()});
+    SMP::internal::Atlas_triangles split;
+    SMP::internal::make_atlas_triangles(points, polygons, split); // as make_atlas() did: it succeeded
     double a2 = 0., a3 = 0.;
-    for(std::size_t f = 0; f < polygons.size(); ++f)
-      for(std::size_t k = 1; k + 1 < polygons[f].size(); ++k) {
-        const std::size_t i[3] = {0, k, k + 1};
-        std::array<std::array<double, 2>, 3> uv;
-        for(int j = 0; j < 3; ++j) uv[j] = atlas.uv[f][i[j]];
-        const Point_3 &a = points[polygons[f][0]], &b = points[polygons[f][k]], &c = points[polygons[f][k + 1]];
-        const SMP::Face_stretch s = SMP::face_stretch(a, b, c, Point_2(uv[0][0], uv[0][1]), Point_2(uv[1][0], uv[1][1]),
-                                                      Point_2(uv[2][0], uv[2][1]));
-        if(std::isfinite(s.l2) && s.area_3d > 0.) { a2 += std::abs(s.area_uv); a3 += s.area_3d; }
-        picture.faces.push_back({int(polygons[f][0]), int(polygons[f][k]), int(polygons[f][k + 1])});
-        picture.corner_uv.push_back(uv);
-        picture.face_stretch.push_back(std::isfinite(s.l2) ? s.l2 : 0.);
-        picture.face_chart.push_back(int(atlas.chart[f]));
-      }
+    for(std::size_t t = 0; t < split.corner.size(); ++t) {
+      const std::size_t f = split.polygon[t];
+      const std::array<int, 3>& i = split.corner[t];
+      std::array<std::array<double, 2>, 3> uv;
+      for(int j = 0; j < 3; ++j) uv[j] = atlas.uv[f][std::size_t(i[j])];
+      const Point_3 &a = points[polygons[f][std::size_t(i[0])]], &b = points[polygons[f][std::size_t(i[1])]],
+                    &c = points[polygons[f][std::size_t(i[2])]];
+      const SMP::Face_stretch s = SMP::face_stretch(a, b, c, Point_2(uv[0][0], uv[0][1]), Point_2(uv[1][0], uv[1][1]),
+                                                    Point_2(uv[2][0], uv[2][1]));
+      if(std::isfinite(s.l2) && s.area_3d > 0.) { a2 += std::abs(s.area_uv); a3 += s.area_3d; }
+      picture.faces.push_back({int(polygons[f][std::size_t(i[0])]), int(polygons[f][std::size_t(i[1])]),
+                               int(polygons[f][std::size_t(i[2])])});
+      picture.corner_uv.push_back(uv);
+      picture.face_stretch.push_back(std::isfinite(s.l2) ? s.l2 : 0.);
+      picture.face_chart.push_back(int(atlas.chart[f]));
+    }
     const double normalization = a3 > 0. ? std::sqrt(a2 / a3) : 1.;
     for(double& s : picture.face_stretch) s *= normalization;
     write_pictures(dir, name, picture, o, 64, outputs);
