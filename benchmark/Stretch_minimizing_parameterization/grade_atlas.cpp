@@ -229,7 +229,8 @@ int main(int argc, char** argv)
   // triangles: each polygon split into a fan, from its first corner whose fan keeps the uv
   // orientation of the whole polygon (a non-convex polygon has a flipped fan from some corners:
   // that would be the split's fault, not the atlas's); if none does, ear by ear if its outline
-  // is simple (a letter has no fan), else from corner 0. Zero uv area
+  // is simple but for corners repeated (a letter, a polygon with a hole written as one, along a
+  // bridge to the hole and back), else from corner 0. Zero uv area
   // on a triangle of positive 3D area is an infinite stretch: counted apart, out of the sums.
   std::vector<Triangle> tri;
   std::size_t refanned = 0, ear_clipped = 0;
@@ -260,7 +261,9 @@ int main(int argc, char** argv)
           const Epick::Triangle_2 ear(uv(a), uv(b), uv(c));
           bool empty = true;
           for(std::size_t j : left)
-            if(j != a && j != b && j != c && ear.bounded_side(uv(j)) != CGAL::ON_UNBOUNDED_SIDE) empty = false;
+            if(j != a && j != b && j != c && uv(j) != uv(a) && uv(j) != uv(b) && uv(j) != uv(c) &&
+               ear.bounded_side(uv(j)) != CGAL::ON_UNBOUNDED_SIDE)
+              empty = false; // (a corner repeated, as at the ends of a bridge to a hole, is no obstacle)
           if(!empty) continue;
           ears.push_back({a, b, c});
           left.erase(left.begin() + std::ptrdiff_t(i));
