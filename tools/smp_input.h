@@ -178,8 +178,8 @@ private:
 
 // The plain ASCII OFF file that most programs write: "OFF" alone on the first line, the vertex,
 // face (and edge) counts on the second, then one vertex of three finite coordinates a line and
-// one face a line (a count of at least 3, then as many indices of vertices), blank lines
-// anywhere. Read line by line with std::from_chars, it takes a fraction of the time of
+// one face a line (a count of at least 3, then as many indices of vertices, which may run on
+// over the next lines), blank lines anywhere. Read line by line with std::from_chars, it takes a fraction of the time of
 // CGAL's reader (whose points and polygons it gives: test_tool checks it). Any other file (not
 // .off, comments, colours, normals, another keyword, a non-finite coordinate, an index out of
 // range, ...) gives false, `points` and `polygons` then unspecified: CGAL's reader reads it.
@@ -230,12 +230,20 @@ bool read_plain_off(const std::string& file, std::vector<Point>& points, std::ve
     if(!next_line())
       return false;
     Off_line fields(line);
-    if(!fields.next(size) || size < 3 || size > line.size())
+    if(!fields.next(size) || size < 3 || size > bytes)
       return false;
     std::vector<std::size_t> polygon(size);
-    for(std::size_t& index : polygon)
-      if(!fields.next(index) || index >= vertices)
+    for(std::size_t& index : polygon) {
+      // a face that runs on over the next lines (OFF is a sequence of numbers; some writers
+      // break a face's line) goes on at the next line that is not blank
+      while(!fields.next(index)) {
+        if(!fields.done() || !next_line())
+          return false;
+        fields = Off_line(line);
+      }
+      if(index >= vertices)
         return false;
+    }
     if(!fields.done())
       return false;
     polygons.push_back(std::move(polygon));

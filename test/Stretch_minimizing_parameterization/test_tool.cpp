@@ -789,6 +789,19 @@ void check_plain_off()
   std::vector<std::string> no_edges = plain_lines;
   no_edges[1] = "5 3";
   same_as_cgal(write("plain_no_edges.off", no_edges, "\n"), true);
+  // faces that run on over the next lines (OFF is a sequence of numbers; some writers break a
+  // face's line), which CGAL's reader refuses: the polygons of the file with one face a line
+  std::vector<std::string> split_faces = plain_lines;
+  split_faces[7] = "3 0";
+  split_faces.insert(split_faces.begin() + 8, {"1", "  4 "});
+  split_faces[11] = "4 2 3";
+  split_faces.insert(split_faces.end(), {"", "0 4"});
+  Points points, split_points;
+  Polygons polygons, split_polygons;
+  SMP_CHECK(smp_tools::internal::read_plain_off(write("plain_split.off", split_faces, "\n"), split_points, split_polygons) &&
+                smp_tools::internal::read_plain_off("plain_lf.off", points, polygons) && split_points == points &&
+                split_polygons == polygons,
+            "faces split over lines: not the polygons of one face a line");
   // files left to CGAL's reader: another keyword, a comment, colours, a sign, an index out of
   // range, a short face, a short vertex, a line after the last face
   const std::vector<std::pair<std::size_t, std::string> > others = {
