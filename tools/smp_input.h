@@ -232,8 +232,10 @@ bool read_plain_off(const std::string& file, std::vector<Point>& points, std::ve
     Off_line fields(line);
     if(!fields.next(size) || size < 3 || size > bytes)
       return false;
-    std::vector<std::size_t> polygon(size);
-    for(std::size_t& index : polygon) {
+    // grown as its indices are read: a count is only as good as the indices that follow it
+    std::vector<std::size_t> polygon;
+    polygon.reserve((std::min)(size, std::size_t(64)));
+    for(std::size_t index = 0; polygon.size() < size; polygon.push_back(index)) {
       // a face that runs on over the next lines (OFF is a sequence of numbers; some writers
       // break a face's line) goes on at the next line that is not blank
       while(!fields.next(index)) {
