@@ -422,35 +422,25 @@ inline std::string printable(const std::string& bytes)
   return shown;
 }
 
-// Why CGAL's reader refused the OBJ file `file`, from its first statement that is not one of
-// the format's, or its first face with an index that is not a vertex's (0, or beyond the
-// vertices: counted from 1, from the end if negative), or the want of any face: "line N: ...";
-// empty if none of these is found.
-inline std::string obj_read_error(const std::string& file)
+// Why CGAL's reader refused the OBJ text `in` (a file, or its text from obj_text_for_cgal(),
+// whose lines keep their numbers), from its first statement that is not one of the format's,
+// or its first face with an index that is not a vertex's (0, or beyond the vertices: counted
+// from 1, from the end if negative), or the want of any face: "line N: ..."; empty if none of
+// these is found.
+inline std::string obj_read_error(std::istream& in)
 {
   static const char* const keywords[] = {
       "v", "vt", "vn", "vp", "f", "l", "p", "o", "g", "s", "mg", "usemtl", "mtllib", "usemap", "maplib",
       "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp", "end",
       "con", "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech",
       "bsp", "bzp", "cdc", "cdp", "res", "surf_1", "q0_1", "q1_1", "curv2d_1", "surf_2", "q0_2", "q1_2", "curv2d_2"};
-  std::ifstream in(file, std::ios::binary);
-  std::string line, more;
+  std::string line;
   std::size_t number = 0, vertices = 0, faces = 0;
   // (line, index) of the first index beyond the vertices before it (a reference forward, which
   // CGAL's reader takes), and of the largest index: either may be beyond the file's vertices
   std::pair<std::size_t, long long> forward(0, 0), largest(0, 0);
   while(std::getline(in, line)) {
     const std::size_t at = ++number;
-    // a line that goes on after a backslash at its end, joined to the next
-    for(;;) {
-      if(!line.empty() && line.back() == '\r')
-        line.pop_back();
-      if(line.empty() || line.back() != '\\' || !std::getline(in, more))
-        break;
-      line.back() = ' ';
-      line += more;
-      ++number;
-    }
     std::istringstream words(line);
     std::string keyword;
     if(!(words >> keyword) || keyword[0] == '#')
@@ -520,7 +510,10 @@ bool read_polygons(const std::string& file, std::vector<Point>& points,
       return std::any_of(polygon.begin(), polygon.end(), [&points](std::size_t v) { return v >= points.size(); });
     };
     if(lower_extension(file) == ".obj" && (!read || std::any_of(polygons.begin(), polygons.end(), outside))) {
-      const std::string why = obj_read_error(file);
+      // the text CGAL's reader was given: a continued line is one there
+      std::istringstream joined(text);
+      std::ifstream original(file, std::ios::binary);
+      const std::string why = obj_read_error(text.empty() ? static_cast<std::istream&>(original) : joined);
       if(!why.empty())
         error = "cannot read " + file + ": " + why;
       return false;

@@ -520,6 +520,9 @@ void check_obj_other_statements()
   check_error("OBJ of lines only", "lines_only.obj --atlas -o out_lines_only", "no polygon");
   std::ofstream("index_out.obj") << points << "l 1 2\nf 1 2 5\nf 2 3 9\n";
   check_error("OBJ face index out of range", "index_out.obj --atlas -o out_index_out", "line 8");
+  std::ofstream("index_after_continued.obj") << points << "f 1 2 \\\n 5\nf 2 3 9\n"; // lines counted in the file
+  check_error("OBJ face index out of range after a continued line", "index_after_continued.obj --atlas -o out_index_out",
+              "line 8");
   std::ofstream("index_zero.obj") << points << "f 1 2 5\nf 0 3 5\n";
   check_error("OBJ face index 0", "index_zero.obj --atlas -o out_index_zero", "line 7");
   SMP_CHECK(!fs::exists("out_index_out") && !fs::exists("out_index_zero") && !fs::exists("out_lod"),

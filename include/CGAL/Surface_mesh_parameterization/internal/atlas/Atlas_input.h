@@ -307,10 +307,14 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
         any = true;
       }
     };
-    ring_xyz.clear();
-    for(int v : ring)
-      ring_xyz.push_back(out.xyz[std::size_t(v)]);
-    if(loops.size() > 1 && triangulate_planar_ring(ring_xyz, ring, pieces)) {
+    bool region = false;
+    if(loops.size() > 1) {
+      ring_xyz.clear();
+      for(int v : ring)
+        ring_xyz.push_back(out.xyz[std::size_t(v)]);
+      region = triangulate_planar_ring(ring_xyz, ring, pieces);
+    }
+    if(region) {
       add_pieces(ring, ring_corner);
     } else {
       for(const auto& loop : loops) {
