@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/Polyhedron_3.h>
@@ -72,7 +73,10 @@ void check_remeshed(const Mesh& in, const Mesh& out, const SMP::Remeshing_report
   const long euler_in = long(in.number_of_vertices()) - long(in.number_of_edges()) + long(in.number_of_faces());
   const long euler_out = long(out.number_of_vertices()) - long(out.number_of_edges()) + long(out.number_of_faces());
   SMP_CHECK(euler_in == euler_out, name << ": Euler characteristic " << euler_out << " for " << euler_in);
-  SMP_CHECK(!PMP::does_self_intersect(out) && r.wrong_faces == 0,
+  // (the two sides of a cut that opened a closed surface touch: closed again first)
+  Mesh closed = out;
+  PMP::stitch_borders(closed);
+  SMP_CHECK(!PMP::does_self_intersect(closed) && r.wrong_faces == 0,
             name << ": the new mesh intersects itself (" << r.wrong_faces << " wrong faces reported)");
 
   // on the input surface, border on its border, faces turned as the input's
@@ -208,6 +212,30 @@ void analytic_cases()
   const std::pair<double, double> band = border_band_areas(out);
   SMP_CHECK(band.first > 0.85 && band.first < 1.15 && band.second < 0.22,
             "half cylinder: the triangles along the border " << band.first << " times the others' mean area, variation " << band.second);
+}
+
+// A tube (radius 1, height 2) cut open along a line from rim to rim, the two sides of the cut
+// at the same points: the new mesh's two sides of the cut get the same points too, so that
+// stitching its coincident border edges closes the cut all along (the two rims stay), and the
+// closed mesh does not intersect itself (sampled apart, the two sides cross each other).
+void cut_tube()
+{
+  const int nu = 48, nv = 16;
+  smp_test::Grid g = smp_test::make_grid(nu, nv);
+  for(auto v : g.mesh.vertices()) {
+    const Point_3 p = g.mesh.point(v);
+    const double a = 2. * CGAL_PI * double(int(p.x()) % nu) / nu; // the last column on the first, exactly
+    g.mesh.point(v) = Point_3(std::cos(a), std::sin(a), 2. * p.y() / nv);
+  }
+  for(const SMP::Remeshing_pair pair : all_pairs) {
+    const std::string name = "cut tube, pair " + std::to_string(int(pair));
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(g.mesh, 800, out, SMP::parameters::parameterization_pair(pair));
+    check_remeshed(g.mesh, out, r, 800, name);
+    PMP::stitch_borders(out);
+    SMP_CHECK(out.is_valid(false) && border_loops(out) == 2 && CGAL::is_closed(out) == false,
+              name << ": " << border_loops(out) << " border loops once the cut is stitched (the two rims expected)");
+  }
 }
 
 // The relaxation on a plane whose domain is squeezed along x (u = x^2, v = y): the vertices of a
@@ -383,6 +411,7 @@ void bad_input()
 int run_test(int, char**)
 {
   analytic_cases();
+  cut_tube();
   relaxation_in_a_squeezed_domain();
   raster_resolution();
   bundled_meshes();

@@ -28,6 +28,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/Circular_border_parameterizer_3.h>
 
@@ -192,9 +193,14 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // the border: evenly spaced samples on each loop
   std::vector<Edge_location> on_border;
   std::vector<std::vector<int> > loops;
-  for(const std::vector<int>& loop : in.loops) {
+  // (a cut that opened a closed surface: its two sides have the same points, see sample_loops())
+  bool cut = false;
+  for(const auto& loop : twin_border_edges(in.loops, m.xyz))
+    for(const std::pair<int, int>& e : loop)
+      cut = cut || e.first >= 0;
+  for(const std::vector<Edge_location>& samples : sample_loops(in.loops, m.xyz, spacing)) {
     loops.emplace_back();
-    for(const Edge_location& e : sample_loop(loop, m.xyz, spacing)) {
+    for(const Edge_location& e : samples) {
       loops.back().push_back(int(on_border.size()));
       on_border.push_back(e);
     }
@@ -344,11 +350,28 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       std::vector<Lifted_mesh::Face_index> wrong;
       {
         std::vector<std::pair<Lifted_mesh::Face_index, Lifted_mesh::Face_index> > crossing;
-        Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(crossing));
-        for(const auto& pair : crossing) {
-          wrong.push_back(pair.first);
-          wrong.push_back(pair.second);
+        // the two sides of a cut touch: they are closed first (faces keep their indices), and
+        // faces that meet at a corner of the cut where the stitching leaves it open are not
+        // taken as crossing
+        const auto touch_at_cut = [&](Lifted_mesh::Face_index f, Lifted_mesh::Face_index g) {
+          for(const auto v : vertices_around_face(mesh.halfedge(f), mesh))
+            for(const auto w : vertices_around_face(mesh.halfedge(g), mesh))
+              if(mesh.is_border(v) && mesh.is_border(w) && mesh.point(v) == mesh.point(w))
+                return true;
+          return false;
+        };
+        if(cut) {
+          Lifted_mesh closed = mesh;
+          Polygon_mesh_processing::stitch_borders(closed);
+          Polygon_mesh_processing::self_intersections(closed, std::back_inserter(crossing));
+        } else {
+          Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(crossing));
         }
+        for(const auto& pair : crossing)
+          if(!cut || !touch_at_cut(pair.first, pair.second)) {
+            wrong.push_back(pair.first);
+            wrong.push_back(pair.second);
+          }
       }
       for(const auto f : mesh.faces()) {
         Vec3 corner[3], input_normal = {{0., 0., 0.}};
