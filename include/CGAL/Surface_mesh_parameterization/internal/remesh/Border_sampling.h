@@ -109,12 +109,14 @@ inline std::vector<std::vector<std::pair<int, int> > > twin_border_edges(const s
 // the vertices where their edges stop or start lying on others, or go on along another stretch
 // (the ends and the tip of a cut): each stretch gets a point at its first vertex and points
 // evenly spaced by arc length between its ends, counted and placed from the end of smaller
-// coordinates, so that the two sides of a cut get the same points bit for bit.
+// coordinates, so that the two sides of a cut get the same points bit for bit. `cut` tells
+// whether any edge lies on another.
 inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<std::vector<int> >& loops,
-                                                             const std::vector<Vec3>& xyz, double spacing)
+                                                             const std::vector<Vec3>& xyz, double spacing, bool& cut)
 {
   const std::vector<std::vector<std::pair<int, int> > > twin = twin_border_edges(loops, xyz);
   std::vector<std::vector<Edge_location> > samples(loops.size());
+  cut = false;
   for(std::size_t l = 0; l < loops.size(); ++l) {
     const std::vector<int>& loop = loops[l];
     const std::size_t n = loop.size();
@@ -123,6 +125,7 @@ inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<s
       samples[l] = sample_loop(loop, xyz, spacing);
       continue;
     }
+    cut = true;
     // vertex k (between edges k - 1 and k) starts a stretch unless both edges lie on two edges
     // that follow each other the other way round, and are not each other's
     std::vector<std::size_t> starts;

@@ -193,12 +193,8 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // the border: evenly spaced samples on each loop
   std::vector<Edge_location> on_border;
   std::vector<std::vector<int> > loops;
-  // (a cut that opened a closed surface: its two sides have the same points, see sample_loops())
-  bool cut = false;
-  for(const auto& loop : twin_border_edges(in.loops, m.xyz))
-    for(const std::pair<int, int>& e : loop)
-      cut = cut || e.first >= 0;
-  for(const std::vector<Edge_location>& samples : sample_loops(in.loops, m.xyz, spacing)) {
+  bool cut = false; // a cut that opened a closed surface: its two sides have the same points
+  for(const std::vector<Edge_location>& samples : sample_loops(in.loops, m.xyz, spacing, cut)) {
     loops.emplace_back();
     for(const Edge_location& e : samples) {
       loops.back().push_back(int(on_border.size()));
