@@ -38,36 +38,51 @@ struct Edge_location
   }
 };
 
-// Points along the closed polyline `loop` (vertices by index into `xyz`), spaced by about
-// `spacing` in 3D, at least three, the first at the loop's first vertex.
-inline std::vector<Edge_location> sample_loop(const std::vector<int>& loop, const std::vector<Vec3>& xyz, double spacing)
+// Points at even steps of 3D arc length along the polyline `v` (vertices by index into `xyz`),
+// about `spacing` apart and at least `fewest` steps: the first at its first vertex, the last at
+// its last vertex; none if it has no length.
+inline std::vector<Edge_location> sample_polyline(const std::vector<int>& v, const std::vector<Vec3>& xyz, double spacing,
+                                                  std::size_t fewest)
 {
-  const std::size_t n = loop.size();
-  std::vector<double> length(n);
+  const std::size_t edges = v.empty() ? 0 : v.size() - 1;
+  std::vector<double> length(edges);
   double total = 0.;
-  for(std::size_t k = 0; k < n; ++k) {
-    length[k] = norm3(sub3(xyz[std::size_t(loop[(k + 1) % n])], xyz[std::size_t(loop[k])]));
-    total += length[k];
+  for(std::size_t i = 0; i < edges; ++i) {
+    length[i] = norm3(sub3(xyz[std::size_t(v[i + 1])], xyz[std::size_t(v[i])]));
+    total += length[i];
   }
-  std::vector<Edge_location> samples;
+  std::vector<Edge_location> points;
   if(!(total > 0.) || !std::isfinite(total))
-    return samples;
-  const double ratio = total / spacing;
-  const std::size_t count = std::size_t((std::max)(3., std::isfinite(ratio) ? std::round((std::min)(ratio, 1e9)) : 3.));
+    return points;
+  const double ratio = total / spacing, least = double(fewest);
+  const std::size_t count = std::size_t((std::max)(least, std::isfinite(ratio) ? std::round((std::min)(ratio, 1e9)) : least));
   std::size_t edge = 0;
   double before = 0.; // arc length at the start of `edge`
-  for(std::size_t s = 0; s < count; ++s) {
-    const double at = total * double(s) / double(count);
-    while(edge + 1 < n && before + length[edge] <= at) {
+  for(std::size_t j = 0; j <= count; ++j) {
+    const double at = total * double(j) / double(count);
+    while(edge + 1 < edges && before + length[edge] <= at) {
       before += length[edge];
       ++edge;
     }
     Edge_location e;
-    e.from = loop[edge];
-    e.to = loop[(edge + 1) % n];
-    e.t = length[edge] > 0. ? (std::min)(1., (at - before) / length[edge]) : 0.;
-    samples.push_back(e);
+    e.from = v[edge];
+    e.to = v[edge + 1];
+    e.t = j == count ? 1. : length[edge] > 0. ? (std::min)(1., (at - before) / length[edge]) : 0.;
+    points.push_back(e);
   }
+  return points;
+}
+
+// Points along the closed polyline `loop` (vertices by index into `xyz`), spaced by about
+// `spacing` in 3D, at least three, the first at the loop's first vertex.
+inline std::vector<Edge_location> sample_loop(const std::vector<int>& loop, const std::vector<Vec3>& xyz, double spacing)
+{
+  std::vector<int> closed = loop;
+  if(!loop.empty())
+    closed.push_back(loop.front());
+  std::vector<Edge_location> samples = sample_polyline(closed, xyz, spacing, 3);
+  if(!samples.empty())
+    samples.pop_back(); // the first one again
   return samples;
 }
 
@@ -159,32 +174,10 @@ inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<s
       const bool reversed = tail < head || (tail == head && xyz[std::size_t(v[v.size() - 2])] < xyz[std::size_t(v[1])]);
       if(reversed)
         std::reverse(v.begin(), v.end());
-      std::vector<double> length(edges);
-      double total = 0.;
-      for(std::size_t i = 0; i < edges; ++i) {
-        length[i] = norm3(sub3(xyz[std::size_t(v[i + 1])], xyz[std::size_t(v[i])]));
-        total += length[i];
-      }
-      if(!(total > 0.)) // a stretch of no length: its point is the next one's
+      // (a stretch of no length has none: its point is the next one's)
+      std::vector<Edge_location> points = sample_polyline(v, xyz, spacing, 1);
+      if(points.empty())
         continue;
-      const double ratio = total / spacing;
-      const std::size_t count =
-          std::size_t((std::max)(1., std::isfinite(ratio) ? std::round((std::min)(ratio, 1e9)) : 1.));
-      std::vector<Edge_location> points; // from the end of smaller coordinates
-      std::size_t edge = 0;
-      double before = 0.;
-      for(std::size_t j = 0; j <= count; ++j) {
-        const double at = total * double(j) / double(count);
-        while(edge + 1 < edges && before + length[edge] <= at) {
-          before += length[edge];
-          ++edge;
-        }
-        Edge_location e;
-        e.from = v[edge];
-        e.to = v[edge + 1];
-        e.t = j == 0 ? 0. : j == count ? 1. : length[edge] > 0. ? (std::min)(1., (at - before) / length[edge]) : 0.;
-        points.push_back(e);
-      }
       // the stretch's first vertex and its inner points, in the loop's order
       if(reversed)
         std::reverse(points.begin(), points.end());
