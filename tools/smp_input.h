@@ -179,8 +179,9 @@ private:
 // The plain ASCII OFF file that most programs write: "OFF" alone on the first line, the vertex,
 // face (and edge) counts on the second, then one vertex of three finite coordinates a line and
 // one face a line (a count of at least 3, then as many indices of vertices, which may run on
-// over the next lines), blank lines anywhere. Read line by line with std::from_chars, it takes a fraction of the time of
-// CGAL's reader (whose points and polygons it gives: test_tool checks it). Any other file (not
+// over the next lines), blank lines anywhere. Read line by line with std::from_chars, it takes
+// a fraction of the time of CGAL's reader (whose points and polygons it gives: test_tool checks
+// it). Any other file (not
 // .off, comments, colours, normals, another keyword, a non-finite coordinate, an index out of
 // range, ...) gives false, `points` and `polygons` then unspecified: CGAL's reader reads it.
 template <typename Point>
