@@ -239,6 +239,45 @@ void cut_tube()
   }
 }
 
+// A strip with a slot narrower than the spacing (as a mouth or a crease is): the triangles
+// that span the slot are turned against the surface. Taking their samples out widened them
+// until the slot was bridged over (the new mesh half its depth away from its bottom, and more);
+// edge flips and samples added there let the new mesh go down into it, without crossing itself.
+void narrow_slot()
+{
+  const double width = 0.01, depth = 0.3; // the spacing at 800 vertices is about 0.06
+  std::vector<std::pair<double, double> > section; // (x, z) across the strip
+  for(int i = 0; i < 50; ++i)
+    section.emplace_back(i / 50., 0.);
+  for(int i = 0; i <= 15; ++i)
+    section.emplace_back(1., -depth * i / 15.);
+  for(int i = 15; i >= 0; --i)
+    section.emplace_back(1. + width, -depth * i / 15.);
+  for(int i = 1; i <= 50; ++i)
+    section.emplace_back(1. + width + i / 50., 0.);
+  smp_test::Grid g = smp_test::make_grid(int(section.size()) - 1, 50);
+  for(auto v : g.mesh.vertices()) {
+    const Point_3 p = g.mesh.point(v);
+    const std::pair<double, double>& s = section[std::size_t(p.x())];
+    g.mesh.point(v) = Point_3(s.first, p.y() / 50., s.second);
+  }
+  for(const SMP::Remeshing_pair pair : {SMP::Remeshing_pair::U0, SMP::Remeshing_pair::U0_UOPT}) {
+    const std::string name = "narrow slot, pair " + std::to_string(int(pair));
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(g.mesh, 800, out, SMP::parameters::parameterization_pair(pair));
+    SMP_CHECK(r.status == SMP::OK, name << ": " << r.message);
+    if(r.status != SMP::OK)
+      continue;
+    SMP_CHECK(out.is_valid(false) && CGAL::is_triangle_mesh(out) && border_loops(out) == 1 &&
+              std::abs(double(r.vertices) - 800.) <= 16., name << ": " << r.vertices << " vertices, " << border_loops(out) << " border loops");
+    SMP_CHECK(!PMP::does_self_intersect(out), name << ": the new mesh intersects itself");
+    const double distance = smp_tools::symmetric_hausdorff_distance(out, g.mesh, diagonal(g.mesh));
+    std::cout << name << ": Hausdorff distance " << distance << " (slot " << depth << " deep), " << r.wrong_faces
+              << " wrong faces" << std::endl;
+    SMP_CHECK(distance < 0.4 * depth, name << ": the new mesh is " << distance << " away from the slot's bottom");
+  }
+}
+
 // The relaxation on a plane whose domain is squeezed along x (u = x^2, v = y): the vertices of a
 // jittered grid settle where the triangles have even areas on the surface, whatever the
 // squeeze (a rule that evens the areas in the domain, or weighs centroids of the domain by the
@@ -413,6 +452,7 @@ int run_test(int, char**)
 {
   analytic_cases();
   cut_tube();
+  narrow_slot();
   relaxation_in_a_squeezed_domain();
   raster_resolution();
   bundled_meshes();

@@ -100,11 +100,8 @@ void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double
       for(int attempt = 0; attempt < 3; ++attempt) {
         uv[std::size_t(v)] = to;
         bool valid = true;
-        for(const auto f : faces_around_target(mesh.halfedge(v), mesh)) {
-          const auto h = mesh.halfedge(f);
-          valid = valid && sign * twice_signed_area(uv[std::size_t(mesh.source(h))], uv[std::size_t(mesh.target(h))],
-                                                    uv[std::size_t(mesh.target(mesh.next(h)))]) > 0.;
-        }
+        for(const auto f : faces_around_target(mesh.halfedge(v), mesh))
+          valid = valid && sign * twice_domain_area(mesh, uv, f) > 0.;
         if(valid && lift(v, to)) {
           fan_normals(v, after);
           bool kept = true; // no triangle turned over on the surface either

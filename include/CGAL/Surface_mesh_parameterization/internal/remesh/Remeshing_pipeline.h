@@ -248,9 +248,13 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // ones too close to the border in 3D (closer than half the spacing, where they would make
   // thin triangles with it) or to the border row (closer than 0.6 times the spacing, where
   // equilateral triangles put the next row at 0.87), and the ones beyond the border chords in
-  // U'. Where the lifted mesh intersects itself or folds (where U' is so compressed that the
-  // order of the samples in it is lost to rounding), the samples of those triangles are taken
-  // out, and no sample is taken again from the input triangles they were in.
+  // U'. Where the lifted mesh intersects itself, or where U' is so compressed that the order of
+  // the samples in it is lost to rounding, the samples of those triangles are taken out, and no
+  // sample is taken again from the input triangles they were in. A triangle turned over on the
+  // surface where U' has room spans a fold narrower than the spacing (a mouth, a crease, a
+  // horn's tip): an edge flip mends it where it can, else a sample is added at its centroid in
+  // U', so that the triangles follow the fold (taking samples out widened the triangles that
+  // span it, until the fold was bridged over).
   const std::size_t b = on_border.size();
   std::vector<Surface_location> inside;
   std::vector<char> excluded(m.tri.size(), 0);
@@ -260,14 +264,14 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   double per_area = double(wanted) / raster.total_area;
   r.seconds_sampling = seconds_since(t0);
   // the round whose count is nearest the one asked for, among those the repair left without a
-  // wrong face if any: where U' is so compressed that samples fall together there (and the
-  // triangulation keeps one), the count can jump from one density to the next, and the rounds
-  // go back and forth
+  // wrong face if any, else without a crossing: where U' is so compressed that samples fall
+  // together there (and the triangulation keeps one), the count can jump from one density to
+  // the next, and the rounds go back and forth
   Lifted_mesh best_mesh;
   std::vector<Vec2> best_uv;
   std::size_t best_wrong = 0;
   double best_miss = HUGE_VAL;
-  bool best_whole = false; // without a wrong face
+  int best_class = -1; // 2 without a wrong face, 1 without a crossing, 0 with one
   std::pair<double, double> fewer(0., 0.), more(0., 0.); // (density, vertices) of a round below, above the count
   for(int round = 0; round < 16; ++round) {
     const auto t1 = std::chrono::steady_clock::now();
@@ -284,6 +288,11 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     }
     r.seconds_sampling += seconds_since(t1);
     const auto t2 = std::chrono::steady_clock::now();
+    // the repair's best state: the fewest faces crossing another, then the fewest wrong ones
+    // (samples added into a fold narrower than the spacing can make faces that cross)
+    Lifted_mesh repaired;
+    std::vector<Vec2> repaired_uv;
+    std::pair<std::size_t, std::size_t> repaired_wrong(std::size_t(-1), std::size_t(-1));
     for(int repair = 0;; ++repair) {
       points.clear();
       for(const Edge_location& e : on_border)
@@ -341,9 +350,23 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
                         mesh.point(v) = K::Point_3(p[0], p[1], p[2]);
                         return true;
                       });
+      // the input surface's normal where each vertex is (0 on the border)
+      std::vector<Vec3> normal(mesh.number_of_vertices(), Vec3{{0., 0., 0.}});
+      for(const auto v : mesh.vertices()) {
+        const std::size_t i = point_of[std::size_t(v)];
+        if(i >= b) {
+          const Triangle& t = m.tri[std::size_t(inside[i - b].face)];
+          const Vec3& p = m.xyz[std::size_t(t[0])];
+          const Vec3 n = cross3(sub3(m.xyz[std::size_t(t[1])], p), sub3(m.xyz[std::size_t(t[2])], p));
+          const double length = norm3(n);
+          if(length > 0.)
+            normal[std::size_t(v)] = {{n[0] / length, n[1] / length, n[2] / length}};
+        }
+      }
+      flip_turned_triangles(mesh, uv, normal, orientation < 0. ? -1. : 1.);
       // the faces that cross another, and the ones turned against the input faces their
       // corners are in
-      std::vector<Lifted_mesh::Face_index> wrong;
+      std::vector<Lifted_mesh::Face_index> wrong, turned;
       {
         std::vector<std::pair<Lifted_mesh::Face_index, Lifted_mesh::Face_index> > crossing;
         // the two sides of a cut touch: they are closed first (faces keep their indices), and
@@ -370,31 +393,47 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
           }
       }
       for(const auto f : mesh.faces()) {
-        Vec3 corner[3], input_normal = {{0., 0., 0.}};
-        int k = 0;
-        for(const auto v : vertices_around_face(mesh.halfedge(f), mesh)) {
-          corner[k++] = {{mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z()}};
-          const std::size_t i = point_of[std::size_t(v)];
-          if(i >= b) {
-            const Triangle& t = m.tri[std::size_t(inside[i - b].face)];
-            const Vec3& p = m.xyz[std::size_t(t[0])];
-            const Vec3 n = cross3(sub3(m.xyz[std::size_t(t[1])], p), sub3(m.xyz[std::size_t(t[2])], p));
-            const double length = norm3(n);
-            for(int j = 0; j < 3 && length > 0.; ++j)
-              input_normal[j] += n[j] / length;
-          }
-        }
-        if(dot3(cross3(sub3(corner[1], corner[0]), sub3(corner[2], corner[0])), input_normal) < 0.)
-          wrong.push_back(f);
+        const auto h = mesh.halfedge(f);
+        const auto u = mesh.source(h), v = mesh.target(h), w = mesh.target(mesh.next(h));
+        if(turned_against(mesh, u, v, w, add3(add3(normal[std::size_t(u)], normal[std::size_t(v)]), normal[std::size_t(w)])))
+          turned.push_back(f);
       }
       std::sort(wrong.begin(), wrong.end());
       wrong.erase(std::unique(wrong.begin(), wrong.end()), wrong.end());
-      r.wrong_faces = wrong.size();
+      const std::size_t crossing_faces = wrong.size();
+      for(const auto f : turned)
+        if(!std::binary_search(wrong.begin(), wrong.begin() + std::ptrdiff_t(crossing_faces), f))
+          wrong.push_back(f);
+      if(std::make_pair(crossing_faces, wrong.size()) < repaired_wrong) {
+        repaired_wrong = {crossing_faces, wrong.size()};
+        repaired = mesh;
+        repaired_uv = uv;
+      }
       if(wrong.empty() || repair == 16)
         break;
+      // (a triangle with less than a billionth of the mean area in U' is squeezed by rounding,
+      // not by the surface's shape)
+      double domain_area = 0.;
+      for(const auto f : mesh.faces())
+        domain_area += std::abs(twice_domain_area(mesh, uv, f));
+      const double least_area = 1e-9 * domain_area / double(mesh.number_of_faces());
       std::vector<char> out(inside.size(), 0);
+      std::vector<Surface_location> added;
       bool any = false;
-      for(const auto f : wrong)
+      for(std::size_t k = 0; k < wrong.size(); ++k) {
+        const auto f = wrong[k];
+        if(k >= crossing_faces && std::abs(twice_domain_area(mesh, uv, f)) > least_area) {
+          Vec2 centroid = {{0., 0.}};
+          for(const auto v : vertices_around_face(mesh.halfedge(f), mesh))
+            for(int i = 0; i < 2; ++i)
+              centroid[i] += uv[std::size_t(v)][i] / 3.;
+          Surface_location s;
+          if(locator.locate_inside(centroid, s)) {
+            added.push_back(s);
+            any = true;
+            continue;
+          }
+        }
         for(const auto v : vertices_around_face(mesh.halfedge(f), mesh)) {
           const std::size_t i = point_of[std::size_t(v)];
           if(i >= b) {
@@ -403,6 +442,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
             any = true;
           }
         }
+      }
       if(!any)
         break;
       std::size_t kept = 0;
@@ -410,21 +450,25 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
         if(!out[i])
           inside[kept++] = inside[i];
       inside.resize(kept);
+      inside.insert(inside.end(), added.begin(), added.end());
     }
+    mesh = std::move(repaired);
+    uv.swap(repaired_uv);
     r.seconds_triangulation += seconds_since(t2);
     const std::size_t used = mesh.number_of_vertices();
     const double miss = std::abs(double(used) - double(settings.vertices));
-    const bool whole = r.wrong_faces == 0;
-    if((whole && !best_whole) || (whole == best_whole && miss < best_miss)) {
+    const bool whole = repaired_wrong.second == 0;
+    const int kind = whole ? 2 : repaired_wrong.first == 0 ? 1 : 0;
+    if(kind > best_class || (kind == best_class && miss < best_miss)) {
       best_miss = miss;
-      best_whole = whole;
+      best_class = kind;
       best_mesh = mesh;
       best_uv = uv;
-      best_wrong = r.wrong_faces;
+      best_wrong = repaired_wrong.second;
     }
     // (past 8 rounds, only while the rounds leave no wrong face: where each leaves some, a round
     // costs the repair's many triangulations, and more of them rarely find a round without)
-    if((whole && miss <= 0.002 * double(settings.vertices)) || used <= b || (round >= 7 && !best_whole))
+    if((whole && miss <= 0.002 * double(settings.vertices)) || used <= b || (round >= 7 && best_class < 2))
       break;
     // the next density: between the last ones that gave too few and too many vertices once
     // both are known (the count is not proportional to the density where the samples left out

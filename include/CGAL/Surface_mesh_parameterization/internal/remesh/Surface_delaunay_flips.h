@@ -25,6 +25,14 @@ namespace internal {
 
 typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Lifted_mesh;
 
+// Twice the signed area of face `f` of `mesh` in the domain `uv`.
+inline double twice_domain_area(const Lifted_mesh& mesh, const std::vector<Vec2>& uv, Lifted_mesh::Face_index f)
+{
+  const auto h = mesh.halfedge(f);
+  return twice_signed_area(uv[std::size_t(mesh.source(h))], uv[std::size_t(mesh.target(h))],
+                           uv[std::size_t(mesh.target(mesh.next(h)))]);
+}
+
 // Flips edges of `mesh` (its vertex i at `uv[i]` in the domain) whose two opposite surface
 // angles sum above pi, in at most `passes` passes over the edges; a flip is left out if a new
 // triangle would be flat or turned in the domain, or if the two new triangles would fold onto
@@ -63,6 +71,51 @@ inline void flip_to_surface_delaunay(Lifted_mesh& mesh, const std::vector<Vec2>&
     }
     if(flips == 0)
       break;
+  }
+}
+
+// True if the triangle (a, b, c) of `mesh` is turned against `normal` (the sum of the input
+// surface's normals where its corners are).
+inline bool turned_against(const Lifted_mesh& mesh, Lifted_mesh::Vertex_index a, Lifted_mesh::Vertex_index b,
+                           Lifted_mesh::Vertex_index c, const Vec3& normal)
+{
+  const auto at = [&](Lifted_mesh::Vertex_index v) -> Vec3 {
+    const auto& p = mesh.point(v);
+    return {{p.x(), p.y(), p.z()}};
+  };
+  return dot3(cross3(sub3(at(b), at(a)), sub3(at(c), at(a))), normal) < 0.;
+}
+
+// Flips an edge of each triangle of `mesh` turned against the surface (`normal[v]`: the input
+// surface's unit normal where vertex v is, 0 if unknown) where both new triangles keep the
+// orientation `sign` in the domain `uv` and neither is turned (a fan that spans a fold
+// narrower than its edges can often follow it with the same vertices).
+inline void flip_turned_triangles(Lifted_mesh& mesh, const std::vector<Vec2>& uv, const std::vector<Vec3>& normal,
+                                  double sign)
+{
+  typedef Lifted_mesh::Vertex_index vertex_descriptor;
+  const auto sum = [&](vertex_descriptor a, vertex_descriptor b, vertex_descriptor c) {
+    return add3(add3(normal[std::size_t(a)], normal[std::size_t(b)]), normal[std::size_t(c)]);
+  };
+  for(const auto f : mesh.faces()) {
+    auto h = mesh.halfedge(f);
+    if(!turned_against(mesh, mesh.source(h), mesh.target(h), mesh.target(mesh.next(h)),
+                       sum(mesh.source(h), mesh.target(h), mesh.target(mesh.next(h)))))
+      continue;
+    for(int k = 0; k < 3; ++k, h = mesh.next(h)) {
+      if(mesh.is_border(mesh.edge(h)))
+        continue;
+      const vertex_descriptor a = mesh.source(h), b = mesh.target(h), c = mesh.target(mesh.next(h)),
+                              d = mesh.target(mesh.next(mesh.opposite(h)));
+      // the quad (a, d, b, c) split into (a, d, c) and (d, b, c)
+      if(!(sign * twice_signed_area(uv[std::size_t(a)], uv[std::size_t(d)], uv[std::size_t(c)]) > 0.) ||
+         !(sign * twice_signed_area(uv[std::size_t(d)], uv[std::size_t(b)], uv[std::size_t(c)]) > 0.) ||
+         CGAL::halfedge(c, d, mesh).second || turned_against(mesh, a, d, c, sum(a, d, c)) ||
+         turned_against(mesh, d, b, c, sum(d, b, c)))
+        continue;
+      CGAL::Euler::flip_edge(h, mesh);
+      break;
+    }
   }
 }
 
