@@ -547,11 +547,13 @@ bool read_soup(const std::string& file, std::vector<Point>& points, std::vector<
 
 // The polygon mesh of `file`, without its isolated vertices (CGAL's parameterization wants a
 // valid polygon mesh, and a vertex of no face has nothing to map); `isolated` receives how
-// many were removed. False, with a message, if it is not a polygon mesh (or has no face).
+// many were removed. False, with a message, if it is not a polygon mesh (or has no face);
+// `soup_hint` ends the message of a soup that is not a mesh (what the calling tool offers).
 // Read as a soup whose indices are checked, then made a mesh: CGAL 5.5.1's read_polygon_mesh()
 // reads past its array of points for an index out of range.
 template <typename Point>
-bool read_mesh(const std::string& file, CGAL::Surface_mesh<Point>& mesh, std::string& error, std::size_t& isolated)
+bool read_mesh(const std::string& file, CGAL::Surface_mesh<Point>& mesh, std::string& error, std::size_t& isolated,
+               const std::string& soup_hint = "")
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   isolated = 0;
@@ -567,7 +569,7 @@ bool read_mesh(const std::string& file, CGAL::Surface_mesh<Point>& mesh, std::st
       }
   if(!PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
     error = "cannot read a polygon mesh from " + file +
-            " (a soup with non-manifold edges, or an inconsistent orientation: add --atlas)";
+            " (a soup with non-manifold edges, or an inconsistent orientation" + soup_hint + ")";
     return false;
   }
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);

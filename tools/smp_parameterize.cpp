@@ -385,7 +385,7 @@ int run(int argc, char** argv)
   Mesh mesh;
   std::string error;
   std::size_t isolated = 0;
-  if(!smp_tools::read_mesh(o.input, mesh, error, isolated))
+  if(!smp_tools::read_mesh(o.input, mesh, error, isolated, ": add --atlas"))
     die(error);
   if(isolated > 0 && !o.quiet)
     std::cout << "removed " << isolated << " isolated vertices (of no face)" << std::endl;

@@ -291,6 +291,9 @@ void check_errors()
   check_error("closed mesh", smp_test::data_file("bear.off"), "--atlas");
   std::ofstream("two.off") << "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n5 0 0\n6 0 0\n5 1 0\n3 0 1 2\n3 3 4 5\n";
   check_error("two components", "two.off", "--atlas");
+  // two triangles on the same side of one edge: a soup, not a polygon mesh
+  std::ofstream("soup.off") << "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n";
+  check_error("not a polygon mesh", "soup.off", "--atlas");
   // a border of three edges (an octahedron less a face): the square border needs four corners
   const std::string octahedron_points = "1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n",
                     octahedron_faces = "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n";
@@ -712,6 +715,9 @@ void check_remesh()
   check_error("remesh: closed mesh", smp_test::data_file("bear.off") + " -n 100" + out, "border", SMP_REMESH_TOOL);
   check_error("remesh: two components", "two.off -n 100" + out, "components", SMP_REMESH_TOOL);
   check_error("remesh: quads", "quads.off -n 100" + out, "triangle", SMP_REMESH_TOOL);
+  check_error("remesh: not a polygon mesh", "soup.off -n 100" + out, "non-manifold", SMP_REMESH_TOOL);
+  SMP_CHECK(run("soup.off -n 100" + out, SMP_REMESH_TOOL).err.find("--atlas") == std::string::npos,
+            "smp-remesh names an option it does not have");
   check_error("remesh: unreadable file", "not_a_mesh.off -n 100" + out, "cannot read", SMP_REMESH_TOOL);
   check_error("remesh: a NaN coordinate", "nan.off -n 100" + out, "nan.off", SMP_REMESH_TOOL);
   std::size_t left = 0;

@@ -4,10 +4,12 @@
 #ifndef CGAL_SMP_INTERNAL_REMESH_SURFACE_DELAUNAY_FLIPS_H
 #define CGAL_SMP_INTERNAL_REMESH_SURFACE_DELAUNAY_FLIPS_H
 
-// A triangulation made Delaunay in a parameter domain is not Delaunay on the surface where
-// the map is not conformal; edge flips on the surface's angles mend it, each flip kept valid
-// in the parameter domain (the new triangles keep the domain's orientation), so the lifted
-// mesh stays an embedding of the domain.
+// Edge flips of a triangulation lifted from a parameter domain to the surface, each kept valid
+// in the domain (the new triangles keep the domain's orientation), so the lifted mesh stays an
+// embedding of the domain: a triangulation made Delaunay in the domain is not Delaunay on the
+// surface where the map is not conformal, and flips on the surface's angles mend it; a
+// triangle turned over on the surface (spanning a fold) is mended by a flip where one leaves
+// both new triangles turned as the surface.
 
 #include <CGAL/Surface_mesh_parameterization/internal/flat_mesh_stretch.h>
 #include <CGAL/Surface_mesh_parameterization/internal/small_vectors.h>
