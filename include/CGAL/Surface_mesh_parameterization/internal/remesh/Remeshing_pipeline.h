@@ -394,8 +394,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       }
       for(const auto f : mesh.faces()) {
         const auto h = mesh.halfedge(f);
-        const auto u = mesh.source(h), v = mesh.target(h), w = mesh.target(mesh.next(h));
-        if(turned_against(mesh, u, v, w, add3(add3(normal[std::size_t(u)], normal[std::size_t(v)]), normal[std::size_t(w)])))
+        if(turned_against(mesh, normal, mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))))
           turned.push_back(f);
       }
       std::sort(wrong.begin(), wrong.end());

@@ -76,16 +76,17 @@ inline void flip_to_surface_delaunay(Lifted_mesh& mesh, const std::vector<Vec2>&
   }
 }
 
-// True if the triangle (a, b, c) of `mesh` is turned against `normal` (the sum of the input
-// surface's normals where its corners are).
-inline bool turned_against(const Lifted_mesh& mesh, Lifted_mesh::Vertex_index a, Lifted_mesh::Vertex_index b,
-                           Lifted_mesh::Vertex_index c, const Vec3& normal)
+// True if the triangle (a, b, c) of `mesh` is turned against the surface: against the sum of
+// the input surface's normals where its corners are (`normal[v]` for vertex v).
+inline bool turned_against(const Lifted_mesh& mesh, const std::vector<Vec3>& normal, Lifted_mesh::Vertex_index a,
+                           Lifted_mesh::Vertex_index b, Lifted_mesh::Vertex_index c)
 {
   const auto at = [&](Lifted_mesh::Vertex_index v) -> Vec3 {
     const auto& p = mesh.point(v);
     return {{p.x(), p.y(), p.z()}};
   };
-  return dot3(cross3(sub3(at(b), at(a)), sub3(at(c), at(a))), normal) < 0.;
+  const Vec3 sum = add3(add3(normal[std::size_t(a)], normal[std::size_t(b)]), normal[std::size_t(c)]);
+  return dot3(cross3(sub3(at(b), at(a)), sub3(at(c), at(a))), sum) < 0.;
 }
 
 // Flips an edge of each triangle of `mesh` turned against the surface (`normal[v]`: the input
@@ -96,13 +97,9 @@ inline void flip_turned_triangles(Lifted_mesh& mesh, const std::vector<Vec2>& uv
                                   double sign)
 {
   typedef Lifted_mesh::Vertex_index vertex_descriptor;
-  const auto sum = [&](vertex_descriptor a, vertex_descriptor b, vertex_descriptor c) {
-    return add3(add3(normal[std::size_t(a)], normal[std::size_t(b)]), normal[std::size_t(c)]);
-  };
   for(const auto f : mesh.faces()) {
     auto h = mesh.halfedge(f);
-    if(!turned_against(mesh, mesh.source(h), mesh.target(h), mesh.target(mesh.next(h)),
-                       sum(mesh.source(h), mesh.target(h), mesh.target(mesh.next(h)))))
+    if(!turned_against(mesh, normal, mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))))
       continue;
     for(int k = 0; k < 3; ++k, h = mesh.next(h)) {
       if(mesh.is_border(mesh.edge(h)))
@@ -112,8 +109,8 @@ inline void flip_turned_triangles(Lifted_mesh& mesh, const std::vector<Vec2>& uv
       // the quad (a, d, b, c) split into (a, d, c) and (d, b, c)
       if(!(sign * twice_signed_area(uv[std::size_t(a)], uv[std::size_t(d)], uv[std::size_t(c)]) > 0.) ||
          !(sign * twice_signed_area(uv[std::size_t(d)], uv[std::size_t(b)], uv[std::size_t(c)]) > 0.) ||
-         CGAL::halfedge(c, d, mesh).second || turned_against(mesh, a, d, c, sum(a, d, c)) ||
-         turned_against(mesh, d, b, c, sum(d, b, c)))
+         CGAL::halfedge(c, d, mesh).second || turned_against(mesh, normal, a, d, c) ||
+         turned_against(mesh, normal, d, b, c))
         continue;
       CGAL::Euler::flip_edge(h, mesh);
       break;
