@@ -34,10 +34,7 @@ void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double
 {
   typedef Lifted_mesh::Vertex_index vertex_descriptor;
   typedef Lifted_mesh::Point Point_3;
-  const auto at = [&](vertex_descriptor v) -> Vec3 {
-    const auto& p = mesh.point(v);
-    return {{p.x(), p.y(), p.z()}};
-  };
+  const auto at = [&](vertex_descriptor v) { return lifted_point(mesh, v); };
   // the normals of the triangles around `v` on the surface (not normalized)
   std::vector<Vec3> before, after;
   std::vector<double> fan_area; // the surface areas of the triangles around a vertex, in turn

@@ -363,7 +363,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
             normal[std::size_t(v)] = {{n[0] / length, n[1] / length, n[2] / length}};
         }
       }
-      flip_turned_triangles(mesh, uv, normal, orientation < 0. ? -1. : 1.);
+      flip_turned_triangles(mesh, uv, normal);
       // the faces that cross another, and the ones turned against the input faces their
       // corners are in
       std::vector<Lifted_mesh::Face_index> wrong, turned;

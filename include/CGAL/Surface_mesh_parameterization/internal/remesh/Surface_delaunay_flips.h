@@ -35,6 +35,29 @@ inline double twice_domain_area(const Lifted_mesh& mesh, const std::vector<Vec2>
                            uv[std::size_t(mesh.target(mesh.next(h)))]);
 }
 
+// The position of vertex `v` of `mesh`.
+inline Vec3 lifted_point(const Lifted_mesh& mesh, Lifted_mesh::Vertex_index v)
+{
+  const auto& p = mesh.point(v);
+  return {{p.x(), p.y(), p.z()}};
+}
+
+// True if flipping the edge of halfedge `h` (not on the border) keeps `mesh` an embedding of
+// the domain `uv`: the quad (a, d, b, c) around it, with (a, b, c) the face of `h`, splits into
+// (a, d, c) and (d, b, c), both turning as (a, b, c) does and not nearly flat, and c and d are
+// not joined already.
+inline bool flip_keeps_domain(const Lifted_mesh& mesh, const std::vector<Vec2>& uv, Lifted_mesh::Halfedge_index h)
+{
+  const auto a = mesh.source(h), b = mesh.target(h), c = mesh.target(mesh.next(h)),
+             d = mesh.target(mesh.next(mesh.opposite(h)));
+  const auto in_domain = [&](Lifted_mesh::Vertex_index v) -> const Vec2& { return uv[std::size_t(v)]; };
+  const double before = twice_signed_area(in_domain(a), in_domain(b), in_domain(c));
+  const double t1 = twice_signed_area(in_domain(a), in_domain(d), in_domain(c)) * before,
+               t2 = twice_signed_area(in_domain(d), in_domain(b), in_domain(c)) * before;
+  const double floor = 1e-12 * before * before;
+  return t1 > floor && t2 > floor && !CGAL::halfedge(c, d, mesh).second;
+}
+
 // Flips edges of `mesh` (its vertex i at `uv[i]` in the domain) whose two opposite surface
 // angles sum above pi, in at most `passes` passes over the edges; a flip is left out if a new
 // triangle would be flat or turned in the domain, or if the two new triangles would fold onto
@@ -43,11 +66,7 @@ inline void flip_to_surface_delaunay(Lifted_mesh& mesh, const std::vector<Vec2>&
 {
   typedef Lifted_mesh::Vertex_index vertex_descriptor;
   typedef Lifted_mesh::Halfedge_index halfedge_descriptor;
-  const auto at = [&](vertex_descriptor v) -> Vec3 {
-    const auto& p = mesh.point(v);
-    return {{p.x(), p.y(), p.z()}};
-  };
-  const auto in_domain = [&](vertex_descriptor v) -> const Vec2& { return uv[std::size_t(v)]; };
+  const auto at = [&](vertex_descriptor v) { return lifted_point(mesh, v); };
   for(int pass = 0; pass < passes; ++pass) {
     std::size_t flips = 0;
     for(const auto e : mesh.edges()) {
@@ -59,12 +78,8 @@ inline void flip_to_surface_delaunay(Lifted_mesh& mesh, const std::vector<Vec2>&
       const Vec3 pa = at(a), pb = at(b), pc = at(c), pd = at(d);
       if(angle3(sub3(pa, pc), sub3(pb, pc)) + angle3(sub3(pa, pd), sub3(pb, pd)) <= CGAL_PI + 1e-9)
         continue;
-      // the quad (a, d, b, c) splits into (a, d, c) and (d, b, c), turning as (a, b, c) does
-      const double before = twice_signed_area(in_domain(a), in_domain(b), in_domain(c));
-      const double t1 = twice_signed_area(in_domain(a), in_domain(d), in_domain(c)) * before,
-                   t2 = twice_signed_area(in_domain(d), in_domain(b), in_domain(c)) * before;
-      const double floor = 1e-12 * before * before;
-      if(!(t1 > floor) || !(t2 > floor) || CGAL::halfedge(c, d, mesh).second)
+      // (the new triangles are (a, d, c) and (d, b, c))
+      if(!flip_keeps_domain(mesh, uv, h))
         continue;
       if(!(dot3(cross3(sub3(pd, pa), sub3(pc, pa)), cross3(sub3(pb, pd), sub3(pc, pd))) > 0.))
         continue;
@@ -81,20 +96,16 @@ inline void flip_to_surface_delaunay(Lifted_mesh& mesh, const std::vector<Vec2>&
 inline bool turned_against(const Lifted_mesh& mesh, const std::vector<Vec3>& normal, Lifted_mesh::Vertex_index a,
                            Lifted_mesh::Vertex_index b, Lifted_mesh::Vertex_index c)
 {
-  const auto at = [&](Lifted_mesh::Vertex_index v) -> Vec3 {
-    const auto& p = mesh.point(v);
-    return {{p.x(), p.y(), p.z()}};
-  };
   const Vec3 sum = add3(add3(normal[std::size_t(a)], normal[std::size_t(b)]), normal[std::size_t(c)]);
-  return dot3(cross3(sub3(at(b), at(a)), sub3(at(c), at(a))), sum) < 0.;
+  const Vec3 p = lifted_point(mesh, a);
+  return dot3(cross3(sub3(lifted_point(mesh, b), p), sub3(lifted_point(mesh, c), p)), sum) < 0.;
 }
 
 // Flips an edge of each triangle of `mesh` turned against the surface (`normal[v]`: the input
-// surface's unit normal where vertex v is, 0 if unknown) where both new triangles keep the
-// orientation `sign` in the domain `uv` and neither is turned (a fan that spans a fold
-// narrower than its edges can often follow it with the same vertices).
-inline void flip_turned_triangles(Lifted_mesh& mesh, const std::vector<Vec2>& uv, const std::vector<Vec3>& normal,
-                                  double sign)
+// surface's unit normal where vertex v is, 0 if unknown) where the flip keeps the domain `uv`
+// (flip_keeps_domain()) and neither new triangle is turned (a fan that spans a fold narrower
+// than its edges can often follow it with the same vertices).
+inline void flip_turned_triangles(Lifted_mesh& mesh, const std::vector<Vec2>& uv, const std::vector<Vec3>& normal)
 {
   typedef Lifted_mesh::Vertex_index vertex_descriptor;
   for(const auto f : mesh.faces()) {
@@ -106,10 +117,7 @@ inline void flip_turned_triangles(Lifted_mesh& mesh, const std::vector<Vec2>& uv
         continue;
       const vertex_descriptor a = mesh.source(h), b = mesh.target(h), c = mesh.target(mesh.next(h)),
                               d = mesh.target(mesh.next(mesh.opposite(h)));
-      // the quad (a, d, b, c) split into (a, d, c) and (d, b, c)
-      if(!(sign * twice_signed_area(uv[std::size_t(a)], uv[std::size_t(d)], uv[std::size_t(c)]) > 0.) ||
-         !(sign * twice_signed_area(uv[std::size_t(d)], uv[std::size_t(b)], uv[std::size_t(c)]) > 0.) ||
-         CGAL::halfedge(c, d, mesh).second || turned_against(mesh, normal, a, d, c) ||
+      if(!flip_keeps_domain(mesh, uv, h) || turned_against(mesh, normal, a, d, c) ||
          turned_against(mesh, normal, d, b, c))
         continue;
       CGAL::Euler::flip_edge(h, mesh);
