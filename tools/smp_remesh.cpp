@@ -48,7 +48,7 @@ struct Options
 {
   std::string input, output, report, picture, pair = "u0-uopt";
   long long vertices = 0;
-  double eta = 1.;
+  double eta = 1., curvature = 0.;
   int iterations = 20, threads = 0, size = 800, up = 2;
   bool quiet = false;
 };
@@ -68,6 +68,9 @@ Options parse(int argc, char** argv)
     ("pair", po::value(&o.pair)->value_name("P"),
      "the parameterizations {U', U''}: u0, u0-u1 or u0-uopt (default): the mesh is triangulated in U' = U^0 "
      "and sampled in U''")
+    ("curvature", po::value(&o.curvature)->value_name("A"),
+     "more vertices where the surface curves: the density goes as 1 + A k / mean(k), k the largest principal "
+     "curvature (default 0: the surface sampled evenly)")
     ("report", po::value(&o.report)->value_name("JSON"), "the report (default: OUT with the extension .json)")
     ("eta", po::value(&o.eta)->value_name("X"), "weight update exponent of U^1 and U^opt, 0 < X <= 1 (default 1)")
     ("iterations", po::value(&o.iterations)->value_name("N"), "cap on the steps of U^opt (default 20)")
@@ -91,6 +94,8 @@ Options parse(int argc, char** argv)
     die("option --pair: give u0, u0-u1 or u0-uopt", 2);
   if(!std::isfinite(o.eta) || !(o.eta > 0.) || o.eta > 1.)
     die("option --eta: give a number in (0, 1]", 2);
+  if(!std::isfinite(o.curvature) || !(o.curvature >= 0.))
+    die("option --curvature: give a number >= 0", 2);
   if(o.iterations < 1 || o.iterations > 10000)
     die("option --iterations: give a whole number from 1 to 10000", 2);
   if(o.threads < 0 || o.threads > 1024)
@@ -141,7 +146,7 @@ int run(int argc, char** argv)
   const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(
       mesh, std::size_t(o.vertices), out,
       P::parameterization_pair(pair).eta(o.eta).number_of_iterations(std::size_t(o.iterations))
-        .number_of_threads(unsigned(o.threads)));
+        .number_of_threads(unsigned(o.threads)).curvature_adaptation(o.curvature));
   if(r.status != SMP::OK)
     die("remeshing failed: " + std::string(SMP::error_message(r.status)) + ": " + r.message);
 
@@ -155,6 +160,7 @@ int run(int argc, char** argv)
   j["input"] = {{"file", o.input}, {"vertices", num_vertices(mesh)}, {"faces", num_faces(mesh)},
                 {"isolated_vertices_removed", isolated}, {"bounding_box_diagonal", diagonal}};
   j["pair"] = o.pair;
+  j["curvature_adaptation"] = o.curvature;
   j["vertices_asked"] = o.vertices;
   j["vertices"] = r.vertices;
   j["border_vertices"] = r.border_vertices;

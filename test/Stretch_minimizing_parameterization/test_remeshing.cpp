@@ -237,6 +237,19 @@ void cut_tube()
     SMP_CHECK(out.is_valid(false) && border_loops(out) == 2,
               name << ": " << border_loops(out) << " border loops once the cut is stitched (the two rims expected)");
   }
+  // a bulging tube, sampled by its curvature: the curvature estimated on each side of the cut
+  // differs (each sees one side), the density on the cut does not
+  for(auto v : g.mesh.vertices()) {
+    const Point_3 p = g.mesh.point(v);
+    const double bulge = 1. + 0.4 * std::sin(CGAL_PI * p.z() / 2.) * (1. + 0.5 * p.x());
+    g.mesh.point(v) = Point_3(bulge * p.x(), bulge * p.y(), p.z());
+  }
+  Mesh out;
+  const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(g.mesh, 800, out, SMP::parameters::curvature_adaptation(2.));
+  check_remeshed(g.mesh, out, r, 800, "bulging cut tube, curvature adaptation 2");
+  PMP::stitch_borders(out);
+  SMP_CHECK(out.is_valid(false) && border_loops(out) == 2,
+            "bulging cut tube: " << border_loops(out) << " border loops once the cut is stitched (the two rims expected)");
 }
 
 // A strip with a slot narrower than the spacing (as a mouth or a crease is): the triangles
@@ -312,7 +325,7 @@ void relaxation_in_a_squeezed_domain()
     return (sum[0] / count[0]) / (sum[1] / count[1]);
   };
   const double before = left_over_right();
-  SMP::internal::relax_in_domain(mesh, uv, 100, 1., [&](Lifted_mesh::Vertex_index v, const SMP::internal::Vec2& q) {
+  SMP::internal::relax_in_domain(mesh, uv, {}, 100, 1., [&](Lifted_mesh::Vertex_index v, const SMP::internal::Vec2& q) {
     if(!(q[0] >= 0. && q[0] <= 1. && q[1] >= 0. && q[1] <= 1.))
       return false;
     mesh.point(v) = Point(std::sqrt(q[0]), q[1], 0);
@@ -343,14 +356,86 @@ void raster_resolution()
     squeezed.push_back({{p[0] <= 0.5 ? p[0] : 0.5 + (p[0] - 0.5) / 50., p[1]}});
   }
   const std::size_t samples = 10000;
-  const std::size_t cells_same = SMP::internal::raster_cells(square, same, samples);
-  const std::size_t cells_scaled = SMP::internal::raster_cells(square, scaled, samples);
+  const std::size_t cells_same = SMP::internal::raster_cells(square, same, samples, {});
+  const std::size_t cells_scaled = SMP::internal::raster_cells(square, scaled, samples, {});
   SMP_CHECK(cells_same == 16 * samples && cells_scaled == 16 * samples,
             "raster of an area-preserving map: " << cells_same << " and " << cells_scaled << " cells for " << samples << " samples");
   // densities 1 and 50 over uv areas 1/2 and 1/100: the mean is 1 / 0.51, the squeezed half 50
   const double expected = 50. * 0.51 * double(samples);
-  const double cells = double(SMP::internal::raster_cells(square, squeezed, samples));
+  const double cells = double(SMP::internal::raster_cells(square, squeezed, samples, {}));
   SMP_CHECK(std::abs(cells - expected) <= 1. + 1e-6 * expected, "raster of a squeezed map: " << cells << " cells, " << expected << " expected");
+}
+
+// A rectangle 2 x 1 (a grid of 40 x 20 squares) with a bump of height `bump` centred at (0.5, 0.5).
+Mesh bumpy_rectangle(double bump)
+{
+  smp_test::Grid g = smp_test::make_grid(40, 20);
+  for(auto v : g.mesh.vertices()) {
+    const double x = g.mesh.point(v).x() / 20., y = g.mesh.point(v).y() / 20.;
+    g.mesh.point(v) = Point_3(x, y, bump * std::exp(-(CGAL::square(x - 0.5) + CGAL::square(y - 0.5)) / (2. * 0.12 * 0.12)));
+  }
+  return g.mesh;
+}
+
+// The vertices of `m` per unit of (x, y) area in the disk of radius `radius` centred at `c`,
+// over the ones in the band x > 1.1 (of area 0.9).
+double vertices_per_area(const Mesh& m, const Point_3& c, double radius)
+{
+  double in = 0., band = 0.;
+  for(auto v : m.vertices()) {
+    const Point_3& p = m.point(v);
+    in += CGAL::square(p.x() - c.x()) + CGAL::square(p.y() - c.y()) < radius * radius ? 1. : 0.;
+    band += p.x() > 1.1 ? 1. : 0.;
+  }
+  return (in / (CGAL_PI * radius * radius)) / (band / 0.9);
+}
+
+// A density given per vertex (4 on the left half of a plane rectangle, 1 on the right) gives
+// about 4 times the vertices per unit area on the left, at the count asked for, the border
+// sampled as densely; the curvature's density puts more vertices on a bump than on the plane.
+void sampling_density()
+{
+  Mesh plane = bumpy_rectangle(0.);
+  auto given = plane.add_property_map<smp_test::vertex_descriptor, double>("v:density", 1.).first;
+  for(auto v : plane.vertices())
+    put(given, v, plane.point(v).x() < 1. ? 4. : 1.);
+  for(const bool dense : {false, true}) {
+    const std::string name = std::string("plane rectangle, ") + (dense ? "density 4 on the left" : "no density");
+    Mesh out;
+    const SMP::Remeshing_report r =
+        dense ? SMP::remesh_with_parameterizations(plane, 1500, out, SMP::parameters::vertex_density_map(given))
+              : SMP::remesh_with_parameterizations(plane, 1500, out);
+    check_remeshed(plane, out, r, 1500, name);
+    double left = 0., right = 0., left_border = 0., right_border = 0.;
+    for(auto v : out.vertices()) {
+      const double x = out.point(v).x();
+      const bool border = is_border(v, out) && out.point(v).y() == 0.; // (the bottom side)
+      left += x < 0.9 ? 1. : 0.;
+      right += x > 1.1 ? 1. : 0.;
+      left_border += border && x < 0.9 ? 1. : 0.;
+      right_border += border && x > 1.1 ? 1. : 0.;
+    }
+    const double ratio = left / right, border_ratio = left_border / right_border;
+    std::cout << name << ": vertices left of x = 0.9 over right of x = 1.1: " << ratio << ", on the bottom side "
+              << border_ratio << std::endl;
+    // (4 times the density: 2 times the vertices along a line)
+    SMP_CHECK(dense ? ratio > 3.4 && ratio < 4.6 : ratio > 0.85 && ratio < 1.15, name << ": " << ratio << " times the vertices on the left");
+    SMP_CHECK(dense ? border_ratio > 1.7 && border_ratio < 2.3 : border_ratio > 0.85 && border_ratio < 1.15,
+              name << ": " << border_ratio << " times the vertices on the left of the bottom side");
+  }
+  const Mesh bumpy = bumpy_rectangle(0.3);
+  double on_bump[2] = {0., 0.};
+  for(const double adaptation : {0., 4.}) {
+    const std::string name = "bumpy rectangle, curvature adaptation " + std::to_string(adaptation);
+    Mesh out;
+    const SMP::Remeshing_report r =
+        SMP::remesh_with_parameterizations(bumpy, 1500, out, SMP::parameters::curvature_adaptation(adaptation));
+    check_remeshed(bumpy, out, r, 1500, name);
+    on_bump[adaptation > 0.] = vertices_per_area(out, Point_3(0.5, 0.5, 0.), 0.25);
+    std::cout << name << ": vertices per unit area on the bump over the plane's: " << on_bump[adaptation > 0.] << std::endl;
+  }
+  SMP_CHECK(on_bump[1] > 2. * on_bump[0], "curvature adaptation: " << on_bump[1] << " times the plane's vertices per unit area on the bump, "
+            << on_bump[0] << " without");
 }
 
 // The bundled meshes: a disk with holes, a head; and the paper's claim on the head, where U^0
@@ -434,6 +519,23 @@ void bad_input()
   Mesh nan = disk;
   nan.point(*nan.vertices().begin()) = Point_3(std::numeric_limits<double>::quiet_NaN(), 0, 0);
   expect(nan, 100, SMP::ERROR_WRONG_PARAMETER, "a NaN coordinate");
+  // densities out of range
+  for(const double d : {0., -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh dense = disk;
+    auto density = dense.add_property_map<smp_test::vertex_descriptor, double>("v:density", 1.).first;
+    put(density, *dense.vertices().begin(), d);
+    Mesh out = planar_disk(2, 3);
+    const std::size_t before = out.number_of_vertices();
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(dense, 100, out, SMP::parameters::vertex_density_map(density));
+    SMP_CHECK(r.status == SMP::ERROR_WRONG_PARAMETER && !r.message.empty() && out.number_of_vertices() == before,
+              "density " << d << ": status " << r.status << " (" << r.message << ")");
+  }
+  for(const double a : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    Mesh out;
+    const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(disk, 100, out, SMP::parameters::curvature_adaptation(a));
+    SMP_CHECK(r.status == SMP::ERROR_WRONG_PARAMETER && !r.message.empty() && out.is_empty(),
+              "curvature adaptation " << a << ": status " << r.status << " (" << r.message << ")");
+  }
   // two disks; a closed surface
   Mesh two = disk;
   {
@@ -455,6 +557,7 @@ int run_test(int, char**)
   narrow_slot();
   relaxation_in_a_squeezed_domain();
   raster_resolution();
+  sampling_density();
   bundled_meshes();
   bad_input();
   return smp_test::summary();

@@ -44,6 +44,15 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// on the density, and the more evenly the surface is sampled. The manual's section on
 /// remeshing gives the stages and what they guarantee.
 ///
+/// The surface is sampled evenly unless a density asks otherwise: a user's density per vertex,
+/// the curvature's, or both (multiplied). The curvature's is \f$ 1 + a\, k / \bar k \f$, with
+/// \f$ a \f$ the curvature adaptation, \f$ k \f$ the largest absolute principal curvature at a
+/// vertex (CGAL's jet fitting on its rings) and \f$ \bar k \f$ its mean over the surface by
+/// area (the ratio capped at 16): the edges shorten as \f$ 1/\sqrt{k} \f$ where the curvature
+/// dominates, which keeps the distance between the triangles and the surface even. A density
+/// is relative: the number of vertices stays the one asked for, and the local spacing goes as
+/// the inverse square root of the density, on the border loops as inside.
+///
 /// Each border loop of the input is kept: the new border vertices are on it, evenly spaced,
 /// and a first row of vertices runs along it inside, so that the triangles along the border
 /// are as even as the others.
@@ -72,6 +81,19 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///     \cgalParamType{`unsigned int`}
 ///     \cgalParamDefault{`3`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_density_map}
+///     \cgalParamDescription{a relative sampling density per vertex of `tmesh`, linear over each
+///       face: the number of vertices per unit area of the new mesh goes as it}
+///     \cgalParamType{a model of `ReadablePropertyMap` from vertices to a number type convertible
+///       to `double`; each value finite and \f$ > 0 \f$}
+///     \cgalParamDefault{1 everywhere}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{curvature_adaptation}
+///     \cgalParamDescription{\f$ a \f$: how much the sampling density follows the curvature
+///       (0: not at all; 4: about five times the mean density where the curvature is the mean's)}
+///     \cgalParamType{`double`, finite and \f$ \ge 0 \f$}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the points of `tmesh`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` from vertices to a 3D point type}
@@ -85,7 +107,7 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// \returns the report; its `status` is `OK`, or `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 /// `ERROR_NO_TOPOLOGICAL_DISC` (no border, several components, handles),
 /// `ERROR_WRONG_PARAMETER` (fewer vertices asked for than the border loops take, a coordinate
-/// that is not finite), an error of the parameterization, or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`
+/// that is not finite, a density or curvature adaptation out of its range), an error of the parameterization, or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`
 /// when memory runs out (`std::bad_alloc`, caught); `message` says more.
 template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::size_t number_of_vertices, PolygonMesh& out,
@@ -112,6 +134,9 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
   };
   if(number_of_vertices < 3 || number_of_vertices > std::size_t((std::numeric_limits<int>::max)() / 4))
     return fail(ERROR_WRONG_PARAMETER, "the number of vertices must be at least 3 and below 2^29");
+  const double adaptation = choose_parameter(get_parameter(np, internal_np::curvature_adaptation), 0.);
+  if(!(adaptation >= 0.) || !std::isfinite(adaptation))
+    return fail(ERROR_WRONG_PARAMETER, "the curvature adaptation must be a finite number >= 0");
 
   try {
     // the input copied into flat arrays and a Surface_mesh, vertices and faces from 0
@@ -137,6 +162,16 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
         triangles.push_back({p[0], p[1], p[2]});
       }
     }
+    // (the soup has the vertices of `tmesh` in their order, and so has the copy)
+    if constexpr(!parameters::is_default_parameter<NamedParameters, internal_np::vertex_density_map_t>::value) {
+      const auto density = get_parameter(np, internal_np::vertex_density_map);
+      for(auto v : vertices(tmesh)) {
+        const double d = CGAL::to_double(get(density, v));
+        if(!(d > 0.) || !std::isfinite(d))
+          return fail(ERROR_WRONG_PARAMETER, "a vertex density is not a finite number > 0");
+        in.density.push_back(d);
+      }
+    }
     Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, in.mesh);
     for(auto v : vertices(in.mesh)) {
       const auto& p = in.mesh.point(v);
@@ -155,6 +190,17 @@ Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::s
                     " connected components: remeshing takes one disk (with holes)");
     }
     in.loops = internal::border_loops(in.mesh);
+    if(adaptation > 0.) {
+      const std::vector<double> curvature = internal::curvature_density(in.mesh, in.flat, adaptation);
+      if(in.density.empty())
+        in.density = curvature;
+      else
+        for(std::size_t i = 0; i < in.density.size(); ++i)
+          in.density[i] *= curvature[i];
+    }
+    internal::weld_density_on_borders(in.flat, in.loops, in.density);
+    if(!internal::normalize_density(in.flat, in.density))
+      return fail(ERROR_WRONG_PARAMETER, "the density has no integral over the surface");
     if(!internal::parameterize_for_remeshing(in, settings.pair, np, r)) {
       r.seconds = internal::seconds_since(settings.start);
       return r;

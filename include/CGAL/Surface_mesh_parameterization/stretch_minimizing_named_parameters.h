@@ -27,6 +27,8 @@ enum max_stretch_t { max_stretch };
 enum resolution_t { resolution };
 enum gutter_t { gutter };
 enum parameterization_pair_t { parameterization_pair };
+enum vertex_density_map_t { vertex_density_map };
+enum curvature_adaptation_t { curvature_adaptation };
 } // namespace internal_np
 
 #ifndef DOXYGEN_RUNNING
@@ -41,7 +43,8 @@ enum parameterization_pair_t { parameterization_pair };
   CGAL_SMP_PACKAGE_LINK(polish_iterations) CGAL_SMP_PACKAGE_LINK(polish_time_budget)          \
   CGAL_SMP_PACKAGE_LINK(free_border) CGAL_SMP_PACKAGE_LINK(number_of_threads)                 \
   CGAL_SMP_PACKAGE_LINK(max_stretch) CGAL_SMP_PACKAGE_LINK(resolution) CGAL_SMP_PACKAGE_LINK(gutter) \
-  CGAL_SMP_PACKAGE_LINK(parameterization_pair)
+  CGAL_SMP_PACKAGE_LINK(parameterization_pair) CGAL_SMP_PACKAGE_LINK(vertex_density_map)        \
+  CGAL_SMP_PACKAGE_LINK(curvature_adaptation)
 #define CGAL_add_named_parameter(X, Y, Z) CGAL_SMP_LINK(CGAL::internal_np::X, Z, K, const K&, )
 #define CGAL_add_named_parameter_with_compatibility(X, Y, Z) CGAL_SMP_LINK(CGAL::internal_np::X, Z, K, const K&, )
 #define CGAL_add_extra_named_parameter_with_compatibility(X, Y, Z) CGAL_SMP_LINK(CGAL::internal_np::X, Z, K, const K&, )
@@ -106,6 +109,8 @@ struct Named_parameters : CGAL::Named_function_parameters<T, Tag, Base>
 /// | `resolution` | `make_atlas()`: texels along a side of the square texture |
 /// | `gutter` | `make_atlas()`: texels left between two charts |
 /// | `parameterization_pair` | `remesh_with_parameterizations()`: the parameterizations {U', U''} (a `Remeshing_pair`) |
+/// | `vertex_density_map` | `remesh_with_parameterizations()`: a relative sampling density per vertex (a property map to numbers > 0) |
+/// | `curvature_adaptation` | `remesh_with_parameterizations()`: how much the sampling follows the curvature (a number >= 0; 0: not at all) |
 namespace parameters {
 
 using namespace CGAL::parameters;

@@ -69,12 +69,12 @@ private:
 // 1 if the surface is on the right of a loop in the domain, -1 if on the left). A chord
 // whose apex is not in the domain (in a hole, past another border) or that is not found near
 // the height asked for (a domain folded too sharply there) gets none; nor one that `keep`
-// refuses (given its 3D point), nor one closer than `gap` to the apex of an earlier chord (where
-// the border turns inwards). `xyz` receives the apexes' 3D points.
-template <typename Keep>
+// refuses (given its location and 3D point), nor one closer than `gap(location)` to the apex of
+// an earlier chord (where the border turns inwards). `xyz` receives the apexes' 3D points.
+template <typename Gap, typename Keep>
 std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vector<Vec2>& domain,
                                          const Domain_locator& locator, const std::vector<Edge_location>& on_border,
-                                         const std::vector<std::vector<int> >& loops, double inside, double gap, Keep keep,
+                                         const std::vector<std::vector<int> >& loops, double inside, Gap gap, Keep keep,
                                          std::vector<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>& xyz)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -115,9 +115,9 @@ std::vector<Surface_location> border_row(const Flat_triangles& m, const std::vec
   std::vector<Surface_location> row;
   xyz.clear();
   for(std::size_t i = 0; i < at.size(); ++i) {
-    if(dropped[i] || !keep(at[i]))
+    if(dropped[i] || !keep(apexes[i], at[i]))
       continue;
-    for(std::size_t j : all.within(at[i], gap))
+    for(std::size_t j : all.within(at[i], gap(apexes[i])))
       if(j > i) dropped[j] = 1;
     row.push_back(apexes[i]);
     xyz.push_back(at[i]);

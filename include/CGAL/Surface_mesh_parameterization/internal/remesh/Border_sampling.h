@@ -38,17 +38,26 @@ struct Edge_location
   }
 };
 
+// The 3D length of the edge from vertex `a` to vertex `b`, times the mean of their `scale`
+// (none: 1).
+inline double scaled_length(int a, int b, const std::vector<Vec3>& xyz, const std::vector<double>& scale)
+{
+  const double length = norm3(sub3(xyz[std::size_t(b)], xyz[std::size_t(a)]));
+  return scale.empty() ? length : 0.5 * (scale[std::size_t(a)] + scale[std::size_t(b)]) * length;
+}
+
 // Points at even steps of 3D arc length along the polyline `v` (vertices by index into `xyz`),
-// about `spacing` apart and at least `fewest` steps: the first at its first vertex, the last at
-// its last vertex; none if it has no length.
-inline std::vector<Edge_location> sample_polyline(const std::vector<int>& v, const std::vector<Vec3>& xyz, double spacing,
-                                                  std::size_t fewest)
+// the length scaled by `scale` (per vertex, linear along each edge; none: 1), about `spacing`
+// apart and at least `fewest` steps: the first at its first vertex, the last at its last vertex;
+// none if it has no length.
+inline std::vector<Edge_location> sample_polyline(const std::vector<int>& v, const std::vector<Vec3>& xyz,
+                                                  const std::vector<double>& scale, double spacing, std::size_t fewest)
 {
   const std::size_t edges = v.empty() ? 0 : v.size() - 1;
   std::vector<double> length(edges);
   double total = 0.;
   for(std::size_t i = 0; i < edges; ++i) {
-    length[i] = norm3(sub3(xyz[std::size_t(v[i + 1])], xyz[std::size_t(v[i])]));
+    length[i] = scaled_length(v[i], v[i + 1], xyz, scale);
     total += length[i];
   }
   std::vector<Edge_location> points;
@@ -74,13 +83,15 @@ inline std::vector<Edge_location> sample_polyline(const std::vector<int>& v, con
 }
 
 // Points along the closed polyline `loop` (vertices by index into `xyz`), spaced by about
-// `spacing` in 3D, at least three, the first at the loop's first vertex.
-inline std::vector<Edge_location> sample_loop(const std::vector<int>& loop, const std::vector<Vec3>& xyz, double spacing)
+// `spacing` in 3D (scaled as sample_polyline() says), at least three, the first at the loop's
+// first vertex.
+inline std::vector<Edge_location> sample_loop(const std::vector<int>& loop, const std::vector<Vec3>& xyz,
+                                              const std::vector<double>& scale, double spacing)
 {
   std::vector<int> closed = loop;
   if(!loop.empty())
     closed.push_back(loop.front());
-  std::vector<Edge_location> samples = sample_polyline(closed, xyz, spacing, 3);
+  std::vector<Edge_location> samples = sample_polyline(closed, xyz, scale, spacing, 3);
   if(!samples.empty())
     samples.pop_back(); // the first one again
   return samples;
@@ -119,7 +130,8 @@ inline std::vector<std::vector<std::pair<int, int> > > twin_border_edges(const s
 }
 
 // Points along the border loops `loops` (vertices by index into `xyz`), one list per loop,
-// spaced by about `spacing` in 3D. A loop none of whose edges lies on another border edge
+// spaced by about `spacing` in 3D (scaled as sample_polyline() says; `scale` is the same at
+// vertices of the same position). A loop none of whose edges lies on another border edge
 // (twin_border_edges()) is sampled by sample_loop(). The other loops are cut into stretches at
 // the vertices where their edges stop or start lying on others, or go on along another stretch
 // (the ends and the tip of a cut): each stretch gets a point at its first vertex and points
@@ -127,7 +139,8 @@ inline std::vector<std::vector<std::pair<int, int> > > twin_border_edges(const s
 // coordinates, so that the two sides of a cut get the same points bit for bit. `cut` tells
 // whether any edge lies on another.
 inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<std::vector<int> >& loops,
-                                                             const std::vector<Vec3>& xyz, double spacing, bool& cut)
+                                                             const std::vector<Vec3>& xyz, const std::vector<double>& scale,
+                                                             double spacing, bool& cut)
 {
   const std::vector<std::vector<std::pair<int, int> > > twin = twin_border_edges(loops, xyz);
   std::vector<std::vector<Edge_location> > samples(loops.size());
@@ -137,7 +150,7 @@ inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<s
     const std::size_t n = loop.size();
     const std::vector<std::pair<int, int> >& t = twin[l];
     if(std::all_of(t.begin(), t.end(), [](const std::pair<int, int>& e) { return e.first < 0; })) {
-      samples[l] = sample_loop(loop, xyz, spacing);
+      samples[l] = sample_loop(loop, xyz, scale, spacing);
       continue;
     }
     cut = true;
@@ -175,7 +188,7 @@ inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<s
       if(reversed)
         std::reverse(v.begin(), v.end());
       // (a stretch of no length has none: its point is the next one's)
-      std::vector<Edge_location> points = sample_polyline(v, xyz, spacing, 1);
+      std::vector<Edge_location> points = sample_polyline(v, xyz, scale, spacing, 1);
       if(points.empty())
         continue;
       // the stretch's first vertex and its inner points, in the loop's order
@@ -184,7 +197,7 @@ inline std::vector<std::vector<Edge_location> > sample_loops(const std::vector<s
       samples[l].insert(samples[l].end(), points.begin(), points.end() - 1);
     }
     if(samples[l].size() < 3) // too short a loop to be cut into stretches
-      samples[l] = sample_loop(loop, xyz, spacing);
+      samples[l] = sample_loop(loop, xyz, scale, spacing);
   }
   return samples;
 }

@@ -44,6 +44,27 @@ Point locate_in(const Surface_location& location, const std::vector<Triangle>& t
   return p;
 }
 
+// The relative sampling density (per vertex, linear over each triangle; see
+// Sampling_density.h) at barycentric coordinates `w` of triangle `t`: 1 if `density` is empty.
+inline double density_at(const std::vector<double>& density, const Triangle& t, const std::array<double, 3>& w)
+{
+  if(density.empty())
+    return 1.;
+  return w[0] * density[std::size_t(t[0])] + w[1] * density[std::size_t(t[1])] + w[2] * density[std::size_t(t[2])];
+}
+
+// The density at a surface location.
+inline double density_at(const std::vector<double>& density, const std::vector<Triangle>& tri, const Surface_location& s)
+{
+  return density.empty() ? 1. : density_at(density, tri[std::size_t(s.face)], s.weight);
+}
+
+// The mean density of triangle `t`.
+inline double mean_density(const std::vector<double>& density, const Triangle& t)
+{
+  return density_at(density, t, {{1. / 3., 1. / 3., 1. / 3.}});
+}
+
 // Barycentric coordinates of `p` in the triangle (a, b, c); false if the triangle is flat or
 // `p` is outside it.
 inline bool barycentric_inside(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c, std::array<double, 3>& w)
@@ -76,16 +97,20 @@ inline std::array<double, 2> triangle_areas(const Flat_triangles& m, const std::
            0.5 * std::abs(twice_signed_area(uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])]))}};
 }
 
-// The number of raster cells for sampling `samples` points through `uv`: 16 a sample where `uv`
-// keeps areas (error diffusion spreads samples less evenly at much smaller fractions of a
-// sample a cell), and as many as keep the densest tenth of the surface (by area) at no more
-// than about one sample a cell, where `uv` squeezes it; within [2^16, 2^23].
-inline std::size_t raster_cells(const Flat_triangles& m, const std::vector<Vec2>& uv, std::size_t samples)
+// The number of raster cells for sampling `samples` points through `uv` with the relative
+// sampling density `sampling`: 16 a sample where `uv` keeps areas (error diffusion spreads
+// samples less evenly at much smaller fractions of a sample a cell), and as many as keep the
+// densest tenth of the samples at no more than about one sample a cell, where `uv` squeezes the
+// surface or the density is high; within [2^16, 2^23].
+inline std::size_t raster_cells(const Flat_triangles& m, const std::vector<Vec2>& uv, std::size_t samples,
+                                const std::vector<double>& sampling)
 {
-  std::vector<std::pair<double, double> > density; // (surface area / uv area, surface area) per triangle
+  // (samples per uv area, samples) per triangle, up to a common factor
+  std::vector<std::pair<double, double> > density;
   double area_3d = 0., area_uv = 0.;
   for(const Triangle& t : m.tri) {
-    const std::array<double, 2> a = triangle_areas(m, uv, t);
+    std::array<double, 2> a = triangle_areas(m, uv, t);
+    a[0] *= mean_density(sampling, t);
     if(a[0] > 0. && a[1] > 0. && std::isfinite(a[0] / a[1])) {
       density.emplace_back(a[0] / a[1], a[0]);
       area_3d += a[0];
@@ -107,9 +132,11 @@ inline std::size_t raster_cells(const Flat_triangles& m, const std::vector<Vec2>
   return std::size_t((std::min)(double(std::size_t(1) << 23), (std::max)(double(std::size_t(1) << 16), cells)));
 }
 
-// Rasterizes the triangles `m.tri` laid out by `uv` on about `cells` cells; a triangle flat in
-// the plane holds no cell, one flat in space holds cells without area.
-inline Density_raster rasterize_density(const Flat_triangles& m, const std::vector<Vec2>& uv, std::size_t cells)
+// Rasterizes the triangles `m.tri` laid out by `uv` on about `cells` cells, each cell's 3D area
+// weighted by the relative sampling density `sampling` at its center; a triangle flat in the
+// plane holds no cell, one flat in space holds cells without area.
+inline Density_raster rasterize_density(const Flat_triangles& m, const std::vector<Vec2>& uv, std::size_t cells,
+                                        const std::vector<double>& sampling)
 {
   Density_raster r;
   Vec2 lo = {{HUGE_VAL, HUGE_VAL}}, hi = {{-HUGE_VAL, -HUGE_VAL}};
@@ -147,7 +174,7 @@ inline Density_raster rasterize_density(const Flat_triangles& m, const std::vect
         const std::size_t i = std::size_t(y) * std::size_t(r.width) + std::size_t(x);
         if(r.face[i] < 0 && barycentric_inside(r.center(x, y), a, b, c, weight)) {
           r.face[i] = int(f);
-          r.area[i] = std::isfinite(ratio) ? ratio * cell_area : 0.;
+          r.area[i] = std::isfinite(ratio) ? ratio * cell_area * density_at(sampling, m.tri[f], weight) : 0.;
           r.total_area += r.area[i];
         }
       }

@@ -5,8 +5,8 @@
 #define CGAL_SMP_INTERNAL_REMESH_DOMAIN_RELAXATION_H
 
 // Lloyd-like relaxation of a lifted triangulation: each interior vertex moves to the centroid
-// of its triangles on the surface (each triangle's centroid weighted by its area: the centroid
-// of its dual cell, approximately), carried to the parameter domain through the triangle of its
+// of its triangles on the surface (each triangle's centroid weighted by its area times the
+// sampling density there: the centroid of its dual cell, approximately), carried to the parameter domain through the triangle of its
 // fan that holds it (if any); the lift puts it back on the surface. This evens out the surface
 // areas and widens the angles wherever the domain is squeezed or stretched. (The same centroid
 // taken in the domain, with the same weights, does not: its fixed point leaves the triangles
@@ -27,10 +27,12 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// `lift(v, q)` puts vertex `v` at the surface point of the domain point `q` (and returns
-// false if it cannot). `sign` is the orientation of the triangles in the domain (1 or -1).
+// `lift(v, q)` puts vertex `v` at the surface point of the domain point `q` and updates its
+// `density` (the relative sampling density per vertex; none: 1), or returns false if it cannot.
+// `sign` is the orientation of the triangles in the domain (1 or -1).
 template <typename Lift>
-void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double sign, Lift lift)
+void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, const std::vector<double>& density, int steps, double sign,
+                     Lift lift)
 {
   typedef Lifted_mesh::Vertex_index vertex_descriptor;
   typedef Lifted_mesh::Point Point_3;
@@ -59,9 +61,12 @@ void relax_in_domain(Lifted_mesh& mesh, std::vector<Vec2>& uv, int steps, double
         const auto h = mesh.halfedge(f);
         const Vec3 a = at(mesh.source(h)), b = at(mesh.target(h)), c = at(mesh.target(mesh.next(h)));
         fan_area.push_back(triangle_area(a, b, c));
+        const double w = density.empty() ? fan_area.back()
+                                         : fan_area.back() * (density[std::size_t(mesh.source(h))] + density[std::size_t(mesh.target(h))] +
+                                                              density[std::size_t(mesh.target(mesh.next(h)))]) / 3.;
         for(int i = 0; i < 3; ++i)
-          sum[i] += fan_area.back() * (a[i] + b[i] + c[i]) / 3.;
-        weight += fan_area.back();
+          sum[i] += w * (a[i] + b[i] + c[i]) / 3.;
+        weight += w;
       }
       if(!(weight > 0.))
         continue;

@@ -19,6 +19,7 @@
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Density_sampling.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_locator.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_relaxation.h>
+#include <CGAL/Surface_mesh_parameterization/internal/remesh/Sampling_density.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Domain_triangulation.h>
 #include <CGAL/Surface_mesh_parameterization/internal/remesh/Surface_delaunay_flips.h>
 #include <CGAL/Surface_mesh_parameterization/internal/wall_clock.h>
@@ -53,6 +54,7 @@ struct Remeshing_input
   Flat_triangles flat;                // the same, as arrays
   std::vector<std::vector<int> > loops; // border loops, vertices by index
   std::vector<Vec2> triangulation_uv, sampling_uv;
+  std::vector<double> density;        // the relative sampling density per vertex (Sampling_density.h)
 };
 
 // The settings of remesh_with_parameterizations() that the stages read.
@@ -180,9 +182,14 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   double area = 0., border = 0.;
   for(const Triangle& t : m.tri)
     area += triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
+  // (where the density is not 1, the border's length in units of the local spacing, whose
+  // square goes as 1 / density)
+  std::vector<double> scale;
+  for(const double d : in.density)
+    scale.push_back(std::sqrt(d));
   for(const std::vector<int>& loop : in.loops)
     for(std::size_t k = 0; k < loop.size(); ++k)
-      border += norm3(sub3(m.xyz[std::size_t(loop[(k + 1) % loop.size()])], m.xyz[std::size_t(loop[k])]));
+      border += scaled_length(loop[k], loop[(k + 1) % loop.size()], m.xyz, scale);
   if(!(area > 0.) || !std::isfinite(area) || !(border > 0.)) {
     r.status = ERROR_WRONG_PARAMETER;
     r.message = "the mesh has no area to sample";
@@ -194,7 +201,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   std::vector<Edge_location> on_border;
   std::vector<std::vector<int> > loops;
   bool cut = false; // a cut that opened a closed surface: its two sides have the same points
-  for(const std::vector<Edge_location>& samples : sample_loops(in.loops, m.xyz, spacing, cut)) {
+  for(const std::vector<Edge_location>& samples : sample_loops(in.loops, m.xyz, scale, spacing, cut)) {
     loops.emplace_back();
     for(const Edge_location& e : samples) {
       loops.back().push_back(int(on_border.size()));
@@ -221,8 +228,8 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   tree.accelerate_distance_queries();
   const double band2 = 0.25 * spacing * spacing;
   const std::size_t wanted = settings.vertices - on_border.size();
-  const std::size_t cells = raster_cells(m, in.sampling_uv, settings.vertices);
-  const Density_raster raster = rasterize_density(m, in.sampling_uv, cells);
+  const std::size_t cells = raster_cells(m, in.sampling_uv, settings.vertices, in.density);
+  const Density_raster raster = rasterize_density(m, in.sampling_uv, cells, in.density);
   if(!(raster.total_area > 0.)) {
     r.status = ERROR_WRONG_PARAMETER;
     r.message = "the sampling parameterization covers no area";
@@ -237,8 +244,12 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // would take more than half the interior vertices (a strip narrower than two rows)
   std::vector<K::Point_3> row_xyz;
   std::vector<Surface_location> row =
-      border_row(m, in.triangulation_uv, locator, on_border, loops, orientation < 0. ? -1. : 1., 0.5 * spacing,
-                 [&](const K::Point_3& p) { return tree.squared_distance(p) >= band2; }, row_xyz);
+      border_row(m, in.triangulation_uv, locator, on_border, loops, orientation < 0. ? -1. : 1.,
+                 [&](const Surface_location& s) { return 0.5 * spacing / std::sqrt(density_at(in.density, m.tri, s)); },
+                 [&](const Surface_location& s, const K::Point_3& p) {
+                   return density_at(in.density, m.tri, s) * tree.squared_distance(p) >= band2;
+                 },
+                 row_xyz);
   if(2 * row.size() > wanted) {
     row.clear();
     row_xyz.clear();
@@ -248,8 +259,9 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // ones too close to the border in 3D (closer than half the spacing, where they would make
   // thin triangles with it) or to the border row (closer than 0.6 times the spacing, where
   // equilateral triangles put the next row at 0.87), and the ones beyond the border chords in
-  // U'. Where the lifted mesh intersects itself, or where U' is so compressed that the order of
-  // the samples in it is lost to rounding, the samples of those triangles are taken out, and no
+  // U' (the spacing: the local one, spacing / sqrt(density), where a density is given). Where
+  // the lifted mesh intersects itself, or where U' is so compressed that the order of the
+  // samples in it is lost to rounding, the samples of those triangles are taken out, and no
   // sample is taken again from the input triangles they were in. A triangle turned over on the
   // surface where U' has room spans a fold narrower than the spacing (a mouth, a crease, a
   // horn's tip): an edge flip mends it where it can, else a sample is added at its centroid in
@@ -282,8 +294,9 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     for(const Surface_location& s : diffuse_samples(raster, m.tri, in.sampling_uv, per_area)) {
       const Vec3 p = locate_in(s, m.tri, m.xyz);
       const K::Point_3 q(p[0], p[1], p[2]);
-      if(!excluded[std::size_t(s.face)] && tree.squared_distance(q) >= band2 &&
-         !near_row.any_within(q, 0.6 * spacing))
+      const double density = density_at(in.density, m.tri, s);
+      if(!excluded[std::size_t(s.face)] && density * tree.squared_distance(q) >= band2 &&
+         !near_row.any_within(q, 0.6 * spacing / std::sqrt(density)))
         inside.push_back(s);
     }
     r.seconds_sampling += seconds_since(t1);
@@ -314,6 +327,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       std::vector<int> index(points.size(), -1);
       std::vector<std::size_t> point_of;
       std::vector<K::Point_3> lifted;
+      std::vector<double> lifted_density; // (none where the density is 1)
       uv.clear();
       for(Triangle& t : triangles) {
         if(orientation < 0.)
@@ -324,6 +338,10 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
             index[i] = int(lifted.size());
             const Vec3 p = i < b ? on_border[i].in(m.xyz) : locate_in(inside[i - b], m.tri, m.xyz);
             lifted.emplace_back(p[0], p[1], p[2]);
+            if(!in.density.empty())
+              lifted_density.push_back(i < b ? (1. - on_border[i].t) * in.density[std::size_t(on_border[i].from)] +
+                                                   on_border[i].t * in.density[std::size_t(on_border[i].to)]
+                                             : density_at(in.density, m.tri, inside[i - b]));
             uv.push_back(points[i]);
             point_of.push_back(i);
           }
@@ -338,7 +356,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       mesh.clear();
       Polygon_mesh_processing::polygon_soup_to_polygon_mesh(lifted, triangles, mesh);
       flip_to_surface_delaunay(mesh, uv, 16);
-      relax_in_domain(mesh, uv, settings.relaxation_steps, orientation < 0. ? -1. : 1.,
+      relax_in_domain(mesh, uv, lifted_density, settings.relaxation_steps, orientation < 0. ? -1. : 1.,
                       [&](Lifted_mesh::Vertex_index v, const Vec2& q) {
                         const std::size_t i = point_of[std::size_t(v)];
                         Surface_location s;
@@ -348,6 +366,8 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
                         points[i] = q;
                         const Vec3 p = locate_in(s, m.tri, m.xyz);
                         mesh.point(v) = K::Point_3(p[0], p[1], p[2]);
+                        if(!lifted_density.empty())
+                          lifted_density[std::size_t(v)] = density_at(in.density, m.tri, s);
                         return true;
                       });
       // the input surface's normal where each vertex is (0 on the border)
