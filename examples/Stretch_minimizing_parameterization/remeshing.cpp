@@ -1,11 +1,14 @@
 // Remeshing a disk-like mesh with two of its parameterizations, {U^0, U^opt}: the new vertices
-// are sampled evenly over the surface through U^opt and triangulated in U^0.
-//   remeshing [mesh.off] [vertices] [out.off]
+// are sampled evenly over the surface through U^opt and triangulated in U^0. Then again with a
+// sampling density: more vertices where the surface curves, and twice as many per unit area
+// above the middle height as below (a density given per vertex).
+//   remeshing [mesh.off] [vertices] [out.off] [adaptive_out.off]
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/error_message.h>
 #include <CGAL/Surface_mesh_parameterization/remesh_with_parameterizations.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <cstdlib>
 #include <iostream>
@@ -46,5 +49,25 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
   std::cout << "wrote " << out << std::endl;
+
+  // a relative density per vertex, multiplied by the curvature's
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
+  auto density = mesh.add_property_map<Mesh::Vertex_index, double>("v:density", 1.).first;
+  for(Mesh::Vertex_index v : mesh.vertices())
+    put(density, v, mesh.point(v).z() > 0.5 * (box.zmin() + box.zmax()) ? 2. : 1.);
+  Mesh adaptive;
+  const SMP::Remeshing_report adapted = SMP::remesh_with_parameterizations(
+      mesh, vertices, adaptive, SMP::parameters::vertex_density_map(density).curvature_adaptation(1.));
+  if(adapted.status != SMP::OK) {
+    std::cerr << "Error: " << SMP::error_message(adapted.status) << ": " << adapted.message << std::endl;
+    return EXIT_FAILURE;
+  }
+  const std::string adaptive_out = argc > 4 ? argv[4] : "remeshed_adaptive.off";
+  if(!CGAL::IO::write_polygon_mesh(adaptive_out, adaptive, CGAL::parameters::stream_precision(17))) {
+    std::cerr << "Error: cannot write " << adaptive_out << std::endl;
+    return EXIT_FAILURE;
+  }
+  std::cout << "with the density: " << adapted.vertices << " vertices (" << adapted.border_vertices
+            << " on the border); wrote " << adaptive_out << std::endl;
   return EXIT_SUCCESS;
 }

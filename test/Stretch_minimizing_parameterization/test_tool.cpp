@@ -694,6 +694,9 @@ void check_remesh()
             report.find("\"mean_distance_over_diagonal\"") != std::string::npos &&
             report.find("\"wrong_faces\": 0") != std::string::npos,
             "smp-remesh: the report is not the mesh's: " << report.substr(0, 300));
+  SMP_CHECK(run(nefertiti + " -n 800 --curvature 1 -q -o out_remesh/curved.off", SMP_REMESH_TOOL).status == 0 &&
+                file_text("out_remesh/curved.json").find("\"curvature_adaptation\": 1.0") != std::string::npos,
+            "smp-remesh --curvature 1: no such report: " << file_text("out_remesh/curved.json").substr(0, 300));
   SMP_CHECK(run(nefertiti + " -n 800 --pair u0 -q -o out_remesh/nefertiti_u0.obj --report out_remesh/u0.json",
                 SMP_REMESH_TOOL).status == 0 && fs::exists("out_remesh/nefertiti_u0.obj") && fs::exists("out_remesh/u0.json"),
             "smp-remesh: an OBJ with its report elsewhere");
@@ -710,6 +713,8 @@ void check_remesh()
   check_error("remesh: output format", nefertiti + " -n 100 -o out_remesh/failed.xyz", ".off", SMP_REMESH_TOOL);
   check_error("remesh: unknown pair", nefertiti + " -n 100 --pair best" + out, "pair", SMP_REMESH_TOOL);
   check_error("remesh: eta out of range", nefertiti + " -n 100 --eta 2" + out, "eta", SMP_REMESH_TOOL);
+  check_error("remesh: negative curvature adaptation", nefertiti + " -n 100 --curvature -1" + out, "curvature", SMP_REMESH_TOOL);
+  check_error("remesh: curvature adaptation not a number", nefertiti + " -n 100 --curvature nan" + out, "curvature", SMP_REMESH_TOOL);
   check_error("remesh: picture format", nefertiti + " -n 100 --picture out_remesh/failed.jpg" + out, ".png", SMP_REMESH_TOOL);
   check_error("remesh: picture axis", nefertiti + " -n 100 --picture out_remesh/failed.png --up w" + out, "--up", SMP_REMESH_TOOL);
   check_error("remesh: closed mesh", smp_test::data_file("bear.off") + " -n 100" + out, "border", SMP_REMESH_TOOL);
