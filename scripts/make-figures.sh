@@ -2,7 +2,7 @@
 # Makes the pictures of the README and the manual with the project's own tools: the mannequin
 # head at U^0, U^1 and U^opt (checkerboard, three-quarter view) and the uv layout of U^opt
 # coloured by stretch, and the head remeshed with {U^0}, {U^0, U^1} and {U^0, U^opt} (the
-# paper's figure 10), into doc/Stretch_minimizing_parameterization/fig/.
+# paper's figure 10) and with its curvature adaptation, into doc/Stretch_minimizing_parameterization/fig/.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
@@ -32,4 +32,7 @@ for pair in U0:u0 U0_U1:u0-u1 U0_Uopt:u0-uopt; do
   build/release/tools/smp-remesh "$mesh" -n 1500 --pair "${pair#*:}" --size 400 -o "$work/remesh.off" \
     --picture "$fig/remesh_mannequin_${pair%%:*}.png"
 done
+# and with more vertices where the surface curves
+build/release/tools/smp-remesh "$mesh" -n 1500 --curvature 1 --size 400 -o "$work/remesh.off" \
+  --picture "$fig/remesh_mannequin_curvature.png"
 echo "figures written to $fig"

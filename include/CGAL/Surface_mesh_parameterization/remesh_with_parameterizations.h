@@ -90,7 +90,8 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{curvature_adaptation}
 ///     \cgalParamDescription{\f$ a \f$: how much the sampling density follows the curvature
-///       (0: not at all; 4: about five times the mean density where the curvature is the mean's)}
+///       (0: not at all); from about \f$ 1/(1+a) \f$ times the mean density where the surface is
+///       flat to \f$ (1+16a)/(1+a) \f$ times where the curvature is 16 times its mean or more}
 ///     \cgalParamType{`double`, finite and \f$ \ge 0 \f$}
 ///     \cgalParamDefault{`0`}
 ///   \cgalParamNEnd
