@@ -9,8 +9,8 @@
 //      repeated and non-manifold polygons) and options, made into an atlas;
 //   2: the same soup as a mesh, parameterized with options, presets and a border halfedge
 //      drawn from the bytes (interior or null ones too);
-//   3: the same soup as a mesh, remeshed (a vertex count and a pair of parameterizations
-//      drawn from the bytes).
+//   3: the same soup as a mesh, remeshed (a vertex count, a pair of parameterizations, a
+//      curvature adaptation and a density per vertex, bad ones too, drawn from the bytes).
 // A mesh read in target 0 is remeshed too.
 // Any crash, sanitizer report, uncaught exception, hang (-timeout) or broken promise (abort
 // below) is a finding.
@@ -197,9 +197,20 @@ void check_remeshing(const Mesh& mesh, Bytes& options)
 {
   const std::size_t vertices = 3 + options.byte() % 120;
   const SMP::Remeshing_pair pair = SMP::Remeshing_pair(options.byte() % 3);
+  const std::uint8_t density_choice = options.byte();
+  const double adaptation = density_choice & 1 ? (density_choice & 2 ? -1. : 8. * options.unit()) : 0.;
+  const auto np = SMP::parameters::parameterization_pair(pair).number_of_threads(1u).curvature_adaptation(adaptation);
   Mesh out;
-  const SMP::Remeshing_report r = SMP::remesh_with_parameterizations(
-      mesh, vertices, out, SMP::parameters::parameterization_pair(pair).number_of_threads(1u));
+  SMP::Remeshing_report r;
+  if(density_choice & 4) {
+    Mesh dense = mesh;
+    auto density = dense.add_property_map<Mesh::Vertex_index, double>("v:fuzz_density", 1.).first;
+    for(const auto v : dense.vertices())
+      put(density, v, options.byte() == 0 ? 0. : 0.01 + 4. * options.unit()); // 0 now and then
+    r = SMP::remesh_with_parameterizations(dense, vertices, out, np.vertex_density_map(density));
+  } else {
+    r = SMP::remesh_with_parameterizations(mesh, vertices, out, np);
+  }
   if(r.status != SMP::OK) {
     promise(!r.message.empty(), "a remeshing error without a message");
     return;

@@ -103,7 +103,11 @@ std::vector<double> curvature_density(const Mesh& mesh, const Flat_triangles& m,
           }
       ring.swap(next);
     }
-    if(points.size() < 6) // fewer than the 6 coefficients of a quadric
+    // (fewer than the 6 coefficients of a quadric, or all at one point: no curvature known)
+    double reach = 0.;
+    for(const Point_3& p : points)
+      reach = (std::max)(reach, CGAL::to_double(CGAL::squared_distance(p, points.front())));
+    if(points.size() < 6 || !(reach > 0.))
       continue;
     const typename Fitting::Monge_form form = fitting(points.begin(), points.end(), 2, 2);
     const double k = (std::max)(std::abs(form.principal_curvatures(0)), std::abs(form.principal_curvatures(1)));
