@@ -195,7 +195,7 @@ inline double hashed_unit(std::uint64_t key)
 // Samples of the raster's density times `per_area` (samples per unit of 3D area) by error
 // diffusion (Floyd-Steinberg, serpentine), the error kept inside the domain. A cell gives as
 // many samples as its accumulated density rounds to, each at a point of the cell drawn within
-// its triangle (its center otherwise).
+// its triangle.
 inline std::vector<Surface_location> diffuse_samples(const Density_raster& r, const std::vector<Triangle>& tri,
                                                      const std::vector<Vec2>& uv, double per_area)
 {
@@ -219,9 +219,17 @@ inline std::vector<Surface_location> diffuse_samples(const Density_raster& r, co
         const Triangle& t = tri[std::size_t(s.face)];
         const Vec2 c = r.center(x, y);
         const std::uint64_t key = (std::uint64_t(i) << 8) ^ std::uint64_t(j);
-        const Vec2 p = {{c[0] + (hashed_unit(2 * key) - 0.5) * r.cell, c[1] + (hashed_unit(2 * key + 1) - 0.5) * r.cell}};
-        if(!barycentric_inside(p, uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])], s.weight))
-          barycentric_inside(c, uv[std::size_t(t[0])], uv[std::size_t(t[1])], uv[std::size_t(t[2])], s.weight);
+        // a point drawn past the triangle's sides is pulled toward the cell's center, which is
+        // in the triangle (the center itself, the same for each sample of the cell, would put
+        // them all at one point, and corners of the triangle likewise)
+        const Vec2 drawn = {{(hashed_unit(2 * key) - 0.5) * r.cell, (hashed_unit(2 * key + 1) - 0.5) * r.cell}};
+        const Vec2 &a = uv[std::size_t(t[0])], &b = uv[std::size_t(t[1])], &e = uv[std::size_t(t[2])];
+        bool placed = false;
+        double scale = 1.;
+        for(int halving = 0; halving < 40 && !placed; ++halving, scale *= 0.5)
+          placed = barycentric_inside({{c[0] + scale * drawn[0], c[1] + scale * drawn[1]}}, a, b, e, s.weight);
+        if(!placed)
+          barycentric_inside(c, a, b, e, s.weight); // (in the triangle: the raster put the cell there)
         samples.push_back(s);
       }
       // the rest goes ahead and below, shared among the neighbours inside the domain

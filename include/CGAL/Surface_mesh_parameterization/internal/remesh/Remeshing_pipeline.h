@@ -287,6 +287,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   std::pair<double, double> fewer(0., 0.), more(0., 0.); // (density, vertices) of a round below, above the count
   for(int round = 0; round < 16; ++round) {
     const auto t1 = std::chrono::steady_clock::now();
+    const std::ptrdiff_t excluded_before = std::count(excluded.begin(), excluded.end(), char(1));
     inside.clear();
     for(const Surface_location& s : row)
       if(!excluded[std::size_t(s.face)])
@@ -494,11 +495,15 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     // near the borders are many: a small count, a narrow strip), else scaled by the count's
     // ratio, by at most 4
     (used < settings.vertices ? fewer : more) = {per_area, double(used)};
+    const double last = per_area;
     if(fewer.first > 0. && more.first > 0.)
       per_area = fewer.first + (more.first - fewer.first) * (double(settings.vertices) - fewer.second) /
                                    (more.second - fewer.second);
     else
       per_area *= (std::min)(4., (std::max)(0.25, double(wanted) / double(used - b)));
+    // (the same density from the same input triangles would give this round again)
+    if(per_area == last && std::count(excluded.begin(), excluded.end(), char(1)) == excluded_before)
+      break;
   }
   mesh = std::move(best_mesh);
   uv.swap(best_uv);
