@@ -108,8 +108,9 @@ CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 /// \returns the report; its `status` is `OK`, or `ERROR_EMPTY_MESH`, `ERROR_NON_TRIANGULAR_MESH`,
 /// `ERROR_NO_TOPOLOGICAL_DISC` (no border, several components, handles),
 /// `ERROR_WRONG_PARAMETER` (fewer vertices asked for than the border loops take, a coordinate
-/// that is not finite, a density or curvature adaptation out of its range), an error of the parameterization, or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM`
-/// when memory runs out (`std::bad_alloc`, caught); `message` says more.
+/// that is not finite, a density or curvature adaptation out of its range), an error of the
+/// parameterization, or `ERROR_CANNOT_SOLVE_LINEAR_SYSTEM` when memory runs out
+/// (`std::bad_alloc`, caught); `message` says more.
 template <typename TriangleMesh, typename PolygonMesh, typename NamedParameters = parameters::Default_named_parameters>
 Remeshing_report remesh_with_parameterizations(const TriangleMesh& tmesh, std::size_t number_of_vertices, PolygonMesh& out,
                                                const NamedParameters& np = parameters::default_values())

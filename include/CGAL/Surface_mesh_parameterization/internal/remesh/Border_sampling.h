@@ -36,6 +36,9 @@ struct Edge_location
       p[i] = (1. - t) * at[std::size_t(from)][i] + t * at[std::size_t(to)][i];
     return p;
   }
+
+  // the same for a value given per vertex
+  double in(const std::vector<double>& at) const { return (1. - t) * at[std::size_t(from)] + t * at[std::size_t(to)]; }
 };
 
 // The 3D length of the edge from vertex `a` to vertex `b`, times the mean of their `scale`

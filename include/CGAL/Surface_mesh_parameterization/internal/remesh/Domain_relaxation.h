@@ -6,9 +6,10 @@
 
 // Lloyd-like relaxation of a lifted triangulation: each interior vertex moves to the centroid
 // of its triangles on the surface (each triangle's centroid weighted by its area times the
-// sampling density there: the centroid of its dual cell, approximately), carried to the parameter domain through the triangle of its
-// fan that holds it (if any); the lift puts it back on the surface. This evens out the surface
-// areas and widens the angles wherever the domain is squeezed or stretched. (The same centroid
+// sampling density there: the centroid of its dual cell, approximately), carried to the
+// parameter domain through the triangle of its fan that holds it (if any); the lift puts it
+// back on the surface. This evens out the surface areas and widens the angles wherever the
+// domain is squeezed or stretched. (The same centroid
 // taken in the domain, with the same weights, does not: its fixed point leaves the triangles
 // larger where the domain is squeezed, and the more steps, the more so.) A move that would turn
 // a triangle in the domain or over on the surface is halved, then left out, so the mesh stays

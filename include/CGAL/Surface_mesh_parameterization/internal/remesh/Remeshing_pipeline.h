@@ -226,7 +226,8 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     }
   Tree tree(chords.begin(), chords.end());
   tree.accelerate_distance_queries();
-  const double band2 = 0.25 * spacing * spacing;
+  // the spacing where a sample is: spacing / sqrt(density)
+  const auto local_spacing = [&](const Surface_location& s) { return spacing / std::sqrt(density_at(in.density, m.tri, s)); };
   const std::size_t wanted = settings.vertices - on_border.size();
   const std::size_t cells = raster_cells(m, in.sampling_uv, settings.vertices, in.density);
   const Density_raster raster = rasterize_density(m, in.sampling_uv, cells, in.density);
@@ -245,9 +246,9 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   std::vector<K::Point_3> row_xyz;
   std::vector<Surface_location> row =
       border_row(m, in.triangulation_uv, locator, on_border, loops, orientation < 0. ? -1. : 1.,
-                 [&](const Surface_location& s) { return 0.5 * spacing / std::sqrt(density_at(in.density, m.tri, s)); },
+                 [&](const Surface_location& s) { return 0.5 * local_spacing(s); },
                  [&](const Surface_location& s, const K::Point_3& p) {
-                   return density_at(in.density, m.tri, s) * tree.squared_distance(p) >= band2;
+                   return tree.squared_distance(p) >= CGAL::square(0.5 * local_spacing(s));
                  },
                  row_xyz);
   if(2 * row.size() > wanted) {
@@ -259,7 +260,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
   // ones too close to the border in 3D (closer than half the spacing, where they would make
   // thin triangles with it) or to the border row (closer than 0.6 times the spacing, where
   // equilateral triangles put the next row at 0.87), and the ones beyond the border chords in
-  // U' (the spacing: the local one, spacing / sqrt(density), where a density is given). Where
+  // U' (the spacing: the local one, where a density is given). Where
   // the lifted mesh intersects itself, or where U' is so compressed that the order of the
   // samples in it is lost to rounding, the samples of those triangles are taken out, and no
   // sample is taken again from the input triangles they were in. A triangle turned over on the
@@ -295,9 +296,9 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
     for(const Surface_location& s : diffuse_samples(raster, m.tri, in.sampling_uv, per_area)) {
       const Vec3 p = locate_in(s, m.tri, m.xyz);
       const K::Point_3 q(p[0], p[1], p[2]);
-      const double density = density_at(in.density, m.tri, s);
-      if(!excluded[std::size_t(s.face)] && density * tree.squared_distance(q) >= band2 &&
-         !near_row.any_within(q, 0.6 * spacing / std::sqrt(density)))
+      const double local = local_spacing(s);
+      if(!excluded[std::size_t(s.face)] && tree.squared_distance(q) >= CGAL::square(0.5 * local) &&
+         !near_row.any_within(q, 0.6 * local))
         inside.push_back(s);
     }
     r.seconds_sampling += seconds_since(t1);
@@ -340,9 +341,7 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
             const Vec3 p = i < b ? on_border[i].in(m.xyz) : locate_in(inside[i - b], m.tri, m.xyz);
             lifted.emplace_back(p[0], p[1], p[2]);
             if(!in.density.empty())
-              lifted_density.push_back(i < b ? (1. - on_border[i].t) * in.density[std::size_t(on_border[i].from)] +
-                                                   on_border[i].t * in.density[std::size_t(on_border[i].to)]
-                                             : density_at(in.density, m.tri, inside[i - b]));
+              lifted_density.push_back(i < b ? on_border[i].in(in.density) : density_at(in.density, m.tri, inside[i - b]));
             uv.push_back(points[i]);
             point_of.push_back(i);
           }

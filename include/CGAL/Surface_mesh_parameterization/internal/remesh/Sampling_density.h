@@ -12,10 +12,8 @@
 
 #include <CGAL/Eigen_svd.h>
 #include <CGAL/Monge_via_jet_fitting.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -26,22 +24,30 @@ namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
 
-// `density` scaled so that its integral over the triangles of `m` is their area; false if it has
-// none (every triangle of area where it is 0).
+// The mean over the surface `m`, by area, of `value` (per vertex, linear over each triangle);
+// 0 if `m` has no area.
+inline double area_mean(const Flat_triangles& m, const std::vector<double>& value)
+{
+  double area = 0., sum = 0.;
+  for(const Triangle& t : m.tri) {
+    const double a = triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
+    area += a;
+    sum += a * mean_density(value, t);
+  }
+  return area > 0. ? sum / area : 0.;
+}
+
+// `density` scaled to a mean of 1 over the surface `m` (by area); false if its mean is not a
+// positive number.
 inline bool normalize_density(const Flat_triangles& m, std::vector<double>& density)
 {
   if(density.empty())
     return true;
-  double area = 0., weighted = 0.;
-  for(const Triangle& t : m.tri) {
-    const double a = triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
-    area += a;
-    weighted += a * mean_density(density, t);
-  }
-  if(!(weighted > 0.) || !std::isfinite(weighted) || !(area > 0.))
+  const double mean = area_mean(m, density);
+  if(!(mean > 0.) || !std::isfinite(mean))
     return false;
   for(double& d : density)
-    d *= area / weighted;
+    d /= mean;
   return true;
 }
 
@@ -114,13 +120,7 @@ std::vector<double> curvature_density(const Mesh& mesh, const Flat_triangles& m,
     if(std::isfinite(k))
       curvature[std::size_t(v)] = k;
   }
-  double area = 0., sum = 0.;
-  for(const Triangle& t : m.tri) {
-    const double a = triangle_area(m.xyz[std::size_t(t[0])], m.xyz[std::size_t(t[1])], m.xyz[std::size_t(t[2])]);
-    area += a;
-    sum += a * mean_density(curvature, t);
-  }
-  const double mean = area > 0. ? sum / area : 0.;
+  const double mean = area_mean(m, curvature);
   std::vector<double> density(n, 1.);
   if(mean > 0. && std::isfinite(mean))
     for(std::size_t i = 0; i < n; ++i)
