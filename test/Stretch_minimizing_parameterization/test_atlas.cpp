@@ -1543,6 +1543,21 @@ void packing_cuts_keep_joins()
             s.name << ": " << r.charts << " charts, seams " << r.seam_length);
 }
 
+// A forced cut (every cut for the packing taken back, the longest chart cut all the same) that
+// leaves the square filled worse is undone once the rounds end there: a triangle with a
+// triangular hole (the shape of CGAL's triangular_hole.off) is one chart without a seam, and
+// fills the square as that chart does (5/13 once turned to its smallest square, less the
+// gutter). Each cut fills it worse, and every cut was kept: 6 charts, 0.31.
+void forced_cuts_undone()
+{
+  const Soup s{"triangle with a triangular hole",
+               {Point(1, 1, 0), Point(3, 1, 0), Point(2, 2, 0), Point(2, 3, 0), Point(0, 0, 0), Point(4, 0, 0)},
+               {{0, 2, 3}, {1, 3, 2}, {0, 4, 1}, {1, 4, 5}, {1, 5, 3}, {0, 3, 4}}};
+  const SMP::Atlas_report r = run(s, 1.05);
+  SMP_CHECK(r.charts == 1 && r.seam_length == 0. && r.utilization > 0.37,
+            s.name << ": " << r.charts << " charts, seams " << r.seam_length << ", utilization " << r.utilization);
+}
+
 // The number of parts a chart far above the bound is cut into, including a bound so close to 1
 // that the ratio of the excesses overflows (found by the fuzz harness: it was converted to int).
 void parts_count()
@@ -2200,6 +2215,7 @@ int run_test(int argc, char** argv)
   holes_without_seams();
   cone_slits();
   packing_cuts_keep_joins();
+  forced_cuts_undone();
   thread_independence();
   loop_triangulations();
   call_independence();

@@ -555,7 +555,39 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
   // per chart, the maps of its halves when its cut was taken back: the same cut tried again
   // (forced, or after other cuts) finds the same halves, whose maps are then taken as they are
   std::map<std::size_t, std::vector<Chart_map> > halves_taken_back;
+  // The charts before a forced cut: the cut may fill the square worse, and the cuts after it
+  // need not make up for that. The rounds end with the charts that filled it best (of those
+  // before each forced cut and those the rounds end with): a seam that fills it worse buys nothing.
+  struct Cut_state
+  {
+    double utilization = -1.;
+    std::vector<Chart_map> charts;
+    std::vector<std::vector<std::size_t> > members;
+    std::vector<double> angle;
+    std::vector<Chart_areas> areas;
+    Chart_growing::Snapshot growing;
+    Coarse_packing current;                       // (coarse estimates)
+    Packing_result accepted;                      // (final packings)
+    std::vector<std::vector<Vec2> > accepted_uv;
+  };
   auto cut_rounds = [&]() {
+    Cut_state best;
+    auto keep_best = [&]() {
+      if(!(utilization > best.utilization))
+        return;
+      best.utilization = utilization;
+      best.charts = charts;
+      best.members = members;
+      best.angle = angle;
+      best.areas = areas;
+      best.growing = g.snapshot();
+      if(final_estimates) {
+        best.accepted = accepted;
+        best.accepted_uv = accepted_uv;
+      } else {
+        best.current = current;
+      }
+    };
     while(round < rounds && taken_back < 2 * rounds && utilization < settings.packing.goal) {
       settings.tell(Atlas_stage::PACKING, std::size_t(round), std::size_t(rounds) + 1);
       tried.resize(charts.size(), 0);
@@ -568,6 +600,8 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
         cut = longest_chart(false, along);
       if(cut == kept.size())
         break;
+      if(forced)
+        keep_best();
       const std::size_t c = kept[cut], before = charts.size();
       Chart_map whole = charts[c];
       Chart_growing::Snapshot growing = g.snapshot();
@@ -607,6 +641,22 @@ inline void build_atlas(const Atlas_triangles& m, std::size_t number_of_polygons
       gather();
       tried[c] = 1;
       ++taken_back;
+    }
+    // (better by more than the rounding of the areas, as a cut kept above)
+    if(best.utilization > utilization * (1. + 1e-4)) {
+      utilization = best.utilization;
+      charts = std::move(best.charts);
+      members = std::move(best.members);
+      angle = std::move(best.angle);
+      areas = std::move(best.areas);
+      g.restore(std::move(best.growing));
+      if(final_estimates) {
+        accepted = std::move(best.accepted);
+        accepted_uv = std::move(best.accepted_uv);
+      } else {
+        current = std::move(best.current);
+      }
+      gather();
     }
   };
   cut_rounds();
