@@ -390,17 +390,19 @@ inline bool remesh_flat(const Remeshing_input& in, const Remeshing_settings& set
       {
         std::vector<std::pair<Lifted_mesh::Face_index, Lifted_mesh::Face_index> > crossing;
         // the two sides of a cut touch: they are closed first (faces keep their indices), and
-        // faces that meet at a corner of the cut where the stitching leaves it open are not
-        // taken as crossing
+        // faces that meet at a corner of the cut where the stitching leaves it open (two
+        // vertices at one point) are not taken as crossing; faces that share a vertex once
+        // closed are, if they cross beyond it
+        Lifted_mesh closed;
         const auto touch_at_cut = [&](Lifted_mesh::Face_index f, Lifted_mesh::Face_index g) {
-          for(const auto v : vertices_around_face(mesh.halfedge(f), mesh))
-            for(const auto w : vertices_around_face(mesh.halfedge(g), mesh))
-              if(mesh.is_border(v) && mesh.is_border(w) && mesh.point(v) == mesh.point(w))
+          for(const auto v : vertices_around_face(closed.halfedge(f), closed))
+            for(const auto w : vertices_around_face(closed.halfedge(g), closed))
+              if(v != w && closed.is_border(v) && closed.is_border(w) && closed.point(v) == closed.point(w))
                 return true;
           return false;
         };
         if(cut) {
-          Lifted_mesh closed = mesh;
+          closed = mesh;
           Polygon_mesh_processing::stitch_borders(closed);
           Polygon_mesh_processing::self_intersections(closed, std::back_inserter(crossing));
         } else {
