@@ -2077,7 +2077,8 @@ void second_thread()
 }
 
 // The packing skips most places when it searches one for a chart (whole free runs, rows that
-// cannot hold it, the rows of the chart in a chosen order); it must still find the place an
+// cannot hold it, the rows of the chart in a chosen order, the rows below a copy of its mask
+// placed in the same square); it must still find the place an
 // exhaustive search finds: the smallest square holding the charts so far, then the lowest top,
 // the first quarter turn, the leftmost corner. And no cell may go to two charts.
 void packing_search()
@@ -2093,7 +2094,9 @@ void packing_search()
     std::vector<std::array<I::Chart_mask, 4> > masks(n);
     std::vector<double> area(n);
     for(std::size_t c = 0; c < n; ++c) {
-      const double size = 3. + 14. * unit(random);
+      // (with copies, a large chart first: the copies then fill the square it made, that stays)
+      const double u = unit(random);
+      const double size = trial % 4 != 1 ? 3. + 14. * u : c == 0 ? 40. : 3. + 6. * u;
       const int spokes = 3 + int(c % 5);
       std::vector<I::Vec2> uv{{0., 0.}};
       std::vector<I::Triangle> tri;
@@ -2115,6 +2118,12 @@ void packing_search()
       if(trial % 4 == 3 && c % 3 != 2)
         for(std::size_t k = c % 3 == 0 ? 2 : 1; k < 4; ++k)
           masks[c][k] = masks[c][c % 3 == 0 ? k - 2 : 0];
+      // a part repeated (the search for a mask placed before starts at its row while the
+      // square is the same): copies of the chart before, in threes
+      if(trial % 4 == 1 && c % 3 != 1 && c > 1) {
+        masks[c] = masks[c - 1];
+        area[c] = area[c - 1];
+      }
     }
     std::vector<long> at_x, at_y;
     std::vector<int> turn;

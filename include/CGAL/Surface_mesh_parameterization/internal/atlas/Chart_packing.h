@@ -26,6 +26,8 @@
 #include <CGAL/exceptions.h>
 #include <CGAL/min_quadrilateral_2.h>
 
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -34,6 +36,7 @@
 #include <functional>
 #include <iterator>
 #include <memory>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -389,9 +392,10 @@ public:
   // The place for `m` that keeps the square [0, side]^2 holding everything smallest (the
   // square so far is `side`), then the chart's top lowest, then leftmost, if it is better
   // than (`best_side`, `best_top`) (-1: nothing yet); they and (`at_x`, `at_y`) are then
-  // updated. Rows are searched upwards only while they may lead to a better place, and in a
-  // row only the free runs under the chart's widest span that are long enough for it.
-  bool best_place(const Chart_mask& m, long side, long& best_side, long& best_top, long& at_x, long& at_y) const
+  // updated. Rows are searched upwards from `from` only while they may lead to a better place,
+  // and in a row only the free runs under the chart's widest span that are long enough for it.
+  bool best_place(const Chart_mask& m, long side, long& best_side, long& best_top, long& at_x, long& at_y,
+                  long from = 0) const
   {
     if(m.widest.empty()) return false;
     const long wide_row = m.widest.front().second;
@@ -399,7 +403,7 @@ public:
     const std::size_t probes = (std::min)(m.widest.size(), std::size_t(4));
     const long bound = best_side < 0 ? width_ : best_side; // no square beyond this side
     bool found = false;
-    for(long y = 0; y + m.height() <= bound; ++y) {
+    for(long y = from; y + m.height() <= bound; ++y) {
       // past these rows, no place is better: either the square or the top grows
       if(best_side >= 0 && (best_side == side ? y + m.height() >= best_top : y + m.height() > best_side)) break;
       // the chart's right end, past which a place here is no better than the best one: once a
@@ -507,6 +511,57 @@ private:
   }
 };
 
+// The row and the square where charts of each mask were last placed. Where a mask was placed
+// at row y, the square then of side `side`, no lower row has a place for it in that square (its
+// search found the best, and cells are only ever taken since), so while the square stays the
+// same, the search for that mask again (a repeated part: bolts, a gear's teeth) starts at row y.
+// A search from there that finds no place in the square starts again from the bottom: a place
+// that grows the square may lie lower.
+class Placed_masks
+{
+public:
+  struct Placed { long y = 0, side = -1; };
+
+  static std::size_t hash(const Chart_mask& m)
+  {
+    std::size_t h = 0;
+    boost::hash_combine(h, m.width);
+    for(const std::vector<Chart_mask::Span>& row : m.rows) {
+      boost::hash_combine(h, row.size());
+      for(const Chart_mask::Span& s : row) {
+        boost::hash_combine(h, s.first);
+        boost::hash_combine(h, s.second);
+      }
+    }
+    return h;
+  }
+
+  // where a chart of mask `m` (of hash `h`) was last placed, or nullptr
+  const Placed* find(const Chart_mask& m, std::size_t h) const
+  {
+    const auto range = m_placed.equal_range(h);
+    for(auto it = range.first; it != range.second; ++it)
+      if(it->second.first->width == m.width && it->second.first->rows == m.rows)
+        return &it->second.second;
+    return nullptr;
+  }
+
+  void record(const Chart_mask& m, std::size_t h, long y, long side)
+  {
+    const Placed placed{y, side};
+    const auto range = m_placed.equal_range(h);
+    for(auto it = range.first; it != range.second; ++it)
+      if(it->second.first->width == m.width && it->second.first->rows == m.rows) {
+        it->second.second = placed;
+        return;
+      }
+    m_placed.emplace(h, std::make_pair(&m, placed));
+  }
+
+private:
+  std::unordered_multimap<std::size_t, std::pair<const Chart_mask*, Placed> > m_placed;
+};
+
 // Places the charts, the largest `size` first, each in the quarter turn and at the place that
 // keeps the square holding them all smallest: inside the square so far where the chart's top
 // rests lowest, else where the square grows least (ties: the lower turn). Returns the side of
@@ -532,22 +587,37 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
   struct Place { long side = -1, top = -1, x = 0, y = 0; int turn = 0; };
   // per chart, its turns to search, in order (`turns[i].first`), and how many (`.second`)
   std::vector<std::pair<std::array<int, 4>, int> > turns(n);
+  std::vector<std::array<std::size_t, 4> > hashes(n);
   for(std::size_t i = 0; i < n; ++i)
     for(int k = 0; k < 4; ++k) {
       const Chart_mask& m = masks[i][std::size_t(k)];
       bool repeated = false;
       for(int j = 0; j < k && !repeated; ++j)
         repeated = masks[i][std::size_t(j)].width == m.width && masks[i][std::size_t(j)].rows == m.rows;
-      if(!repeated)
+      if(!repeated) {
         turns[i].first[std::size_t(turns[i].second++)] = k;
+        hashes[i][std::size_t(k)] = Placed_masks::hash(m);
+      }
     }
+  Placed_masks placed;
   // the best place of chart i in the lower half of its turns (or the higher one if `higher`) if
   // better than `p`, else `p`
   const auto best_of = [&](std::size_t i, bool higher, Place p) {
     const int count = turns[i].second, middle = (count + 1) / 2;
     for(int j = higher ? middle : 0; j < (higher ? count : middle); ++j) {
       const int k = turns[i].first[std::size_t(j)];
-      if(occupancy.best_place(masks[i][std::size_t(k)], side, p.side, p.top, p.x, p.y))
+      const Chart_mask& m = masks[i][std::size_t(k)];
+      const Placed_masks::Placed* before = placed.find(m, hashes[i][std::size_t(k)]);
+      if(before && before->side == side) {
+        Place q = p;
+        if(occupancy.best_place(m, side, q.side, q.top, q.x, q.y, before->y))
+          q.turn = k;
+        if(q.side == side) { // in the square: no place below `before->y` is
+          p = q;
+          continue;
+        }
+      }
+      if(occupancy.best_place(m, side, p.side, p.top, p.x, p.y))
         p.turn = k;
     }
     return p;
@@ -575,6 +645,7 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
     at_x[i] = p.x; at_y[i] = p.y; turn[i] = p.turn;
     occupancy.take(masks[i][std::size_t(p.turn)], p.x, p.y);
     side = p.side;
+    placed.record(masks[i][std::size_t(p.turn)], hashes[i][std::size_t(p.turn)], p.y, side);
   }
   return side;
 }
