@@ -511,6 +511,9 @@ private:
   }
 };
 
+// Whether two masks have the same cells.
+inline bool same_cells(const Chart_mask& a, const Chart_mask& b) { return a.width == b.width && a.rows == b.rows; }
+
 // The row and the square where charts of each mask were last placed. Where a mask was placed
 // at row y, the square then of side `side`, no lower row has a place for it in that square (its
 // search found the best, and cells are only ever taken since), so while the square stays the
@@ -522,6 +525,21 @@ class Placed_masks
 public:
   struct Placed { long y = 0, side = -1; };
 
+private:
+  typedef std::unordered_multimap<std::size_t, std::pair<const Chart_mask*, Placed> > Map;
+  Map m_placed;
+
+  // the entry of the mask `m` in `placed` (a Map, const or not), or its end
+  template <typename M>
+  static auto entry(M& placed, const Chart_mask& m, std::size_t h)
+  {
+    const auto range = placed.equal_range(h);
+    const auto it = std::find_if(range.first, range.second,
+                                 [&m](const auto& e) { return same_cells(*e.second.first, m); });
+    return it == range.second ? placed.end() : it;
+  }
+
+public:
   static std::size_t hash(const Chart_mask& m)
   {
     std::size_t h = 0;
@@ -539,27 +557,18 @@ public:
   // where a chart of mask `m` (of hash `h`) was last placed, or nullptr
   const Placed* find(const Chart_mask& m, std::size_t h) const
   {
-    const auto range = m_placed.equal_range(h);
-    for(auto it = range.first; it != range.second; ++it)
-      if(it->second.first->width == m.width && it->second.first->rows == m.rows)
-        return &it->second.second;
-    return nullptr;
+    const auto it = entry(m_placed, m, h);
+    return it == m_placed.end() ? nullptr : &it->second.second;
   }
 
   void record(const Chart_mask& m, std::size_t h, long y, long side)
   {
-    const Placed placed{y, side};
-    const auto range = m_placed.equal_range(h);
-    for(auto it = range.first; it != range.second; ++it)
-      if(it->second.first->width == m.width && it->second.first->rows == m.rows) {
-        it->second.second = placed;
-        return;
-      }
-    m_placed.emplace(h, std::make_pair(&m, placed));
+    const auto it = entry(m_placed, m, h);
+    if(it == m_placed.end())
+      m_placed.emplace(h, std::make_pair(&m, Placed{y, side}));
+    else
+      it->second.second = Placed{y, side};
   }
-
-private:
-  std::unordered_multimap<std::size_t, std::pair<const Chart_mask*, Placed> > m_placed;
 };
 
 // Places the charts, the largest `size` first, each in the quarter turn and at the place that
@@ -593,7 +602,7 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
       const Chart_mask& m = masks[i][std::size_t(k)];
       bool repeated = false;
       for(int j = 0; j < k && !repeated; ++j)
-        repeated = masks[i][std::size_t(j)].width == m.width && masks[i][std::size_t(j)].rows == m.rows;
+        repeated = same_cells(masks[i][std::size_t(j)], m);
       if(!repeated) {
         turns[i].first[std::size_t(turns[i].second++)] = k;
         hashes[i][std::size_t(k)] = Placed_masks::hash(m);
