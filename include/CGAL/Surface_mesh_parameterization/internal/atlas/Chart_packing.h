@@ -511,65 +511,36 @@ private:
   }
 };
 
-// Whether two masks have the same cells.
-inline bool same_cells(const Chart_mask& a, const Chart_mask& b) { return a.width == b.width && a.rows == b.rows; }
-
-// The row and the square where charts of each mask were last placed. Where a mask was placed
-// at row y, the square then of side `side`, no lower row has a place for it in that square (its
-// search found the best, and cells are only ever taken since), so while the square stays the
-// same, the search for that mask again (a repeated part: bolts, a gear's teeth) starts at row y.
-// A search from there that finds no place in the square starts again from the bottom: a place
-// that grows the square may lie lower.
-class Placed_masks
+// For chart i's mask in quarter turn k, the first of `masks` with the same cells, as 4 j + l
+// for chart j's mask in turn l (charts in order, each turn by turn): masks of one class are
+// copies (the turns of a symmetric chart, the charts of a part repeated).
+inline std::vector<std::array<std::size_t, 4> > copies_of(const std::vector<std::array<Chart_mask, 4> >& masks)
 {
-public:
-  struct Placed { long y = 0, side = -1; };
-
-private:
-  typedef std::unordered_multimap<std::size_t, std::pair<const Chart_mask*, Placed> > Map;
-  Map m_placed;
-
-  // the entry of the mask `m` in `placed` (a Map, const or not), or its end
-  template <typename M>
-  static auto entry(M& placed, const Chart_mask& m, std::size_t h)
-  {
-    const auto range = placed.equal_range(h);
-    const auto it = std::find_if(range.first, range.second,
-                                 [&m](const auto& e) { return same_cells(*e.second.first, m); });
-    return it == range.second ? placed.end() : it;
-  }
-
-public:
-  static std::size_t hash(const Chart_mask& m)
-  {
-    std::size_t h = 0;
-    boost::hash_combine(h, m.width);
-    for(const std::vector<Chart_mask::Span>& row : m.rows) {
-      boost::hash_combine(h, row.size());
-      for(const Chart_mask::Span& s : row) {
-        boost::hash_combine(h, s.first);
-        boost::hash_combine(h, s.second);
+  std::vector<std::array<std::size_t, 4> > first(masks.size());
+  std::unordered_multimap<std::size_t, std::size_t> by_hash;
+  for(std::size_t i = 0; i < masks.size(); ++i)
+    for(std::size_t k = 0; k < 4; ++k) {
+      const Chart_mask& m = masks[i][k];
+      std::size_t h = 0;
+      boost::hash_combine(h, m.width);
+      for(const std::vector<Chart_mask::Span>& row : m.rows) {
+        boost::hash_combine(h, row.size());
+        for(const Chart_mask::Span& span : row) {
+          boost::hash_combine(h, span.first);
+          boost::hash_combine(h, span.second);
+        }
       }
+      const auto range = by_hash.equal_range(h);
+      const auto copy = std::find_if(range.first, range.second, [&](const auto& e) {
+        const Chart_mask& other = masks[e.second / 4][e.second % 4];
+        return other.width == m.width && other.rows == m.rows;
+      });
+      first[i][k] = copy != range.second ? copy->second : 4 * i + k;
+      if(copy == range.second)
+        by_hash.emplace(h, 4 * i + k);
     }
-    return h;
-  }
-
-  // where a chart of mask `m` (of hash `h`) was last placed, or nullptr
-  const Placed* find(const Chart_mask& m, std::size_t h) const
-  {
-    const auto it = entry(m_placed, m, h);
-    return it == m_placed.end() ? nullptr : &it->second.second;
-  }
-
-  void record(const Chart_mask& m, std::size_t h, long y, long side)
-  {
-    const auto it = entry(m_placed, m, h);
-    if(it == m_placed.end())
-      m_placed.emplace(h, std::make_pair(&m, Placed{y, side}));
-    else
-      it->second.second = Placed{y, side};
-  }
-};
+  return first;
+}
 
 // Places the charts, the largest `size` first, each in the quarter turn and at the place that
 // keeps the square holding them all smallest: inside the square so far where the chart's top
@@ -594,21 +565,21 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
   at_x.assign(n, 0); at_y.assign(n, 0); turn.assign(n, 0);
   long side = 0;
   struct Place { long side = -1, top = -1, x = 0, y = 0; int turn = 0; };
+  const std::vector<std::array<std::size_t, 4> > copy = copies_of(masks);
   // per chart, its turns to search, in order (`turns[i].first`), and how many (`.second`)
   std::vector<std::pair<std::array<int, 4>, int> > turns(n);
-  std::vector<std::array<std::size_t, 4> > hashes(n);
   for(std::size_t i = 0; i < n; ++i)
-    for(int k = 0; k < 4; ++k) {
-      const Chart_mask& m = masks[i][std::size_t(k)];
-      bool repeated = false;
-      for(int j = 0; j < k && !repeated; ++j)
-        repeated = same_cells(masks[i][std::size_t(j)], m);
-      if(!repeated) {
+    for(int k = 0; k < 4; ++k)
+      if(std::find(copy[i].begin(), copy[i].begin() + k, copy[i][std::size_t(k)]) == copy[i].begin() + k)
         turns[i].first[std::size_t(turns[i].second++)] = k;
-        hashes[i][std::size_t(k)] = Placed_masks::hash(m);
-      }
-    }
-  Placed_masks placed;
+  // Per class of copies (copies_of()), the row and the square where a mask of it was last
+  // placed. No lower row has a place for that mask in that square (its search found the best,
+  // and cells are only ever taken since), so while the square stays the same, the search for a
+  // copy (a part repeated: bolts, a gear's teeth) starts at that row. A search from there that
+  // finds no place in the square starts again from the bottom: a place that grows the square
+  // may lie lower.
+  struct Placed { long y = 0, side = -1; };
+  std::vector<Placed> placed(4 * n);
   // the best place of chart i in the lower half of its turns (or the higher one if `higher`) if
   // better than `p`, else `p`
   const auto best_of = [&](std::size_t i, bool higher, Place p) {
@@ -616,12 +587,12 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
     for(int j = higher ? middle : 0; j < (higher ? count : middle); ++j) {
       const int k = turns[i].first[std::size_t(j)];
       const Chart_mask& m = masks[i][std::size_t(k)];
-      const Placed_masks::Placed* before = placed.find(m, hashes[i][std::size_t(k)]);
-      if(before && before->side == side) {
+      const Placed& before = placed[copy[i][std::size_t(k)]];
+      if(before.side == side) {
         Place q = p;
-        if(occupancy.best_place(m, side, q.side, q.top, q.x, q.y, before->y))
+        if(occupancy.best_place(m, side, q.side, q.top, q.x, q.y, before.y))
           q.turn = k;
-        if(q.side == side) { // in the square: no place below `before->y` is
+        if(q.side == side) { // in the square: no place below `before.y` is
           p = q;
           continue;
         }
@@ -654,7 +625,7 @@ inline long place_charts(const std::vector<std::array<Chart_mask, 4> >& masks, c
     at_x[i] = p.x; at_y[i] = p.y; turn[i] = p.turn;
     occupancy.take(masks[i][std::size_t(p.turn)], p.x, p.y);
     side = p.side;
-    placed.record(masks[i][std::size_t(p.turn)], hashes[i][std::size_t(p.turn)], p.y, side);
+    placed[copy[i][std::size_t(p.turn)]] = Placed{p.y, side};
   }
   return side;
 }
