@@ -13,6 +13,8 @@
 
 #include <CGAL/number_utils.h>
 
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -52,6 +54,18 @@ struct Edge_hash
   std::size_t operator()(const std::pair<int, int>& e) const
   {
     return std::hash<long long>()((static_cast<long long>(e.first) << 32) ^ static_cast<long long>(e.second));
+  }
+};
+
+// Hash of a position, for welding: equal positions (0 and -0 alike) have one hash.
+struct Position_hash
+{
+  std::size_t operator()(const Vec3& p) const
+  {
+    std::size_t h = 0;
+    for(const double c : p)
+      boost::hash_combine(h, c + 0.); // -0 + 0 is +0
+    return h;
   }
 };
 
@@ -218,7 +232,7 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
   std::vector<int>& weld = out.weld;
   weld.resize(nv);
   {
-    std::map<Vec3, int> first;
+    std::unordered_map<Vec3, int, Position_hash> first(nv);
     for(std::size_t v = 0; v < nv; ++v) {
       const auto it = first.emplace(out.xyz[v], int(v)).first;
       weld[v] = it->second;
@@ -285,46 +299,52 @@ std::string make_atlas_triangles(const PointRange& points, const PolygonRange& p
       ring_begin.push_back(sorted_rings.size());
       continue;
     }
-    // a ring that passes a vertex again: the planar region it bounds if it is one (a polygon
-    // with holes written as one, see triangulate_planar_ring()), else each simple loop
-    // triangulated; a triangle covered twice (in any orientation) kept once
-    split_into_simple_loops(ring, ring_corner, loops);
     bool any = false;
-    seen.clear();
-    // the triangles `pieces` of positions along `loop` (vertices, corners)
-    const auto add_pieces = [&](const std::vector<int>& loop, const std::vector<int>& loop_corner) {
-      for(const auto& t : pieces) {
-        const std::array<int, 3> v = {loop[t[0]], loop[t[1]], loop[t[2]]};
-        if(too_small(out.xyz[std::size_t(v[0])], out.xyz[std::size_t(v[1])], out.xyz[std::size_t(v[2])]))
-          continue;
-        std::array<int, 3> key = v;
-        std::sort(key.begin(), key.end());
-        if(!seen.insert(key).second)
-          continue;
-        out.vertex.push_back(v);
-        out.polygon.push_back(index);
-        out.corner.push_back({loop_corner[t[0]], loop_corner[t[1]], loop_corner[t[2]]});
-        any = true;
-      }
+    const auto add_triangle = [&](const std::array<int, 3>& v, const std::array<int, 3>& c) {
+      if(too_small(out.xyz[std::size_t(v[0])], out.xyz[std::size_t(v[1])], out.xyz[std::size_t(v[2])]))
+        return;
+      out.vertex.push_back(v);
+      out.polygon.push_back(index);
+      out.corner.push_back(c);
+      any = true;
     };
-    bool region = false;
-    if(loops.size() > 1) {
-      ring_xyz.clear();
-      for(int v : ring)
-        ring_xyz.push_back(out.xyz[std::size_t(v)]);
-      region = triangulate_planar_ring(ring_xyz, ring, pieces);
-    }
-    if(region) {
-      add_pieces(ring, ring_corner);
+    if(ring.size() == 3) { // three distinct vertices: the triangle itself
+      add_triangle({ring[0], ring[1], ring[2]}, {ring_corner[0], ring_corner[1], ring_corner[2]});
     } else {
-      for(const auto& loop : loops) {
-        if(loop.first.size() < 3)
-          continue; // a walk there and back: no area
+      // a ring that passes a vertex again: the planar region it bounds if it is one (a polygon
+      // with holes written as one, see triangulate_planar_ring()), else each simple loop
+      // triangulated; a triangle covered twice (in any orientation) kept once
+      split_into_simple_loops(ring, ring_corner, loops);
+      seen.clear();
+      // the triangles `pieces` of positions along `loop` (vertices, corners)
+      const auto add_pieces = [&](const std::vector<int>& loop, const std::vector<int>& loop_corner) {
+        for(const auto& t : pieces) {
+          const std::array<int, 3> v = {loop[t[0]], loop[t[1]], loop[t[2]]};
+          std::array<int, 3> key = v;
+          std::sort(key.begin(), key.end());
+          if(seen.insert(key).second)
+            add_triangle(v, {loop_corner[t[0]], loop_corner[t[1]], loop_corner[t[2]]});
+        }
+      };
+      bool region = false;
+      if(loops.size() > 1) {
         ring_xyz.clear();
-        for(int v : loop.first)
+        for(int v : ring)
           ring_xyz.push_back(out.xyz[std::size_t(v)]);
-        triangulate_polygon(ring_xyz, pieces);
-        add_pieces(loop.first, loop.second);
+        region = triangulate_planar_ring(ring_xyz, ring, pieces);
+      }
+      if(region) {
+        add_pieces(ring, ring_corner);
+      } else {
+        for(const auto& loop : loops) {
+          if(loop.first.size() < 3)
+            continue; // a walk there and back: no area
+          ring_xyz.clear();
+          for(int v : loop.first)
+            ring_xyz.push_back(out.xyz[std::size_t(v)]);
+          triangulate_polygon(ring_xyz, pieces);
+          add_pieces(loop.first, loop.second);
+        }
       }
     }
     if(!any) {
