@@ -1672,6 +1672,20 @@ void planar_regions_snapped()
             "three parts: not snapped to the planes' larger shares");
 }
 
+// Welding: a vertex goes to the first vertex at its position, zero and minus zero alike;
+// positions a last bit apart stay apart.
+void welded_positions()
+{
+  const double one_up = std::nextafter(1., 2.);
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(-0., 0, -0.),
+                                     Point(1, 0, 0), Point(0, one_up, 0), Point(0, 1, 0)};
+  const std::vector<Polygon> polygons = {{0, 1, 2}, {3, 4, 5}, {6, 5, 4}};
+  SMP::internal::Atlas_triangles m;
+  SMP_CHECK(SMP::internal::make_atlas_triangles(points, polygons, m).empty(), "welding: the soup is refused");
+  SMP_CHECK(m.weld == std::vector<int>({0, 1, 2, 0, 1, 5, 2}) && m.welded_vertices == 3,
+            "welding: " << m.welded_vertices << " vertices welded");
+}
+
 // A torus grown into charts within a normal cone of `angle`, and the state of the growing: per
 // triangle its chart and its corners' chart vertices (4 entries a triangle).
 struct Grown_torus
@@ -2232,6 +2246,7 @@ int run_test(int argc, char** argv)
   polish_steps_end();
   detached_pieces();
   planar_regions_snapped();
+  welded_positions();
   growing_taken_back();
   join_taken_back();
   charts_joined();
