@@ -23,11 +23,24 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <mutex>
 #include <vector>
 
 namespace CGAL {
 namespace Surface_mesh_parameterization {
 namespace internal {
+
+// METIS draws from one random number generator of the whole process (GKlib's, seeded anew at
+// the start of each call), which is not made for threads: two calls at once draw from each
+// other's sequence, and their orders, and the rounding of the factorizations in them, would
+// follow the timing (charts of the atlas polished side by side). One call at a time, in every
+// configuration of the solvers.
+inline std::mutex& metis_mutex()
+{
+  static std::mutex m;
+  return m;
+}
+
 CGAL_SMP_BEGIN_SOLVER_NAMESPACE
 
 // Below this many vertices the minimum degree order is as good (measured: no faster
@@ -63,7 +76,11 @@ inline std::vector<int> fill_reducing_vertex_rank(std::size_t vertices, const st
   cholmod_sparse A = Eigen::viewAsCholmod(lower);
   A.stype = -1; // symmetric, lower triangle stored
   std::vector<int> order(vertices);
-  const bool ordered = cholmod_metis(&A, nullptr, 0, 1, order.data(), &common) != 0;
+  bool ordered = false;
+  {
+    std::lock_guard<std::mutex> one_at_a_time(metis_mutex());
+    ordered = cholmod_metis(&A, nullptr, 0, 1, order.data(), &common) != 0;
+  }
   cholmod_finish(&common);
   if(!ordered)
     return {};
