@@ -62,6 +62,10 @@ struct Deferred_polish
   bool pending = false;
   std::vector<Triangle> guard; // as polish_free_border() takes them
   std::vector<int> border;
+  // a chart mapped with its slits closed (flatten_with_holes()) is polished closed: the closed
+  // chart, and each chart vertex's vertex in it (empty for the others)
+  Flat_triangles closed;
+  std::vector<int> merged;
 };
 
 // A flattened chart: its triangles, the chart vertex of each of their corners, and the uv of
@@ -457,7 +461,16 @@ inline void finish_polish(Chart_map& chart, const Chart_parameterization_setting
     return;
   const Deferred_polish d = std::move(chart.deferred);
   chart.deferred = Deferred_polish();
-  polish_free_border(chart.flat, d.guard, d.border, settings, chart.uv);
+  if(d.merged.empty()) {
+    polish_free_border(chart.flat, d.guard, d.border, settings, chart.uv);
+  } else {
+    std::vector<Vec2> uv(d.closed.xyz.size());
+    for(std::size_t v = 0; v < d.merged.size(); ++v)
+      uv[std::size_t(d.merged[v])] = chart.uv[v];
+    if(polish_free_border(d.closed, d.guard, d.border, settings, uv))
+      for(std::size_t v = 0; v < d.merged.size(); ++v)
+        chart.uv[v] = uv[std::size_t(d.merged[v])];
+  }
   measure_chart(chart);
 }
 
@@ -545,8 +558,9 @@ inline bool flatten_holed(const Flat_triangles& flat, Chart_mesh& sm, const Char
 // so that a chart grown around a hole needs no seam to it. False if the chart has no slit, or
 // the closed chart is not a surface of genus 0 with holes, or no conformal map of it is a bijection;
 // `holes` tells whether it is one (a slit closed without a hole is the cut of a cone, which the
-// other starts open).
-inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes)
+// other starts open). With `later`, as flatten_holed() (the closed chart goes with the polish left).
+inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_settings& settings, bool& holes,
+                               Deferred_polish* later = nullptr)
 {
   holes = false;
   if(chart.slits.empty())
@@ -588,12 +602,19 @@ inline bool flatten_with_holes(Chart_map& chart, const Chart_parameterization_se
   }
   Chart_mesh sm;
   std::vector<Vec2> uv;
-  if(!make_chart_mesh(closed, sm) || !flatten_holed(closed, sm, settings, uv, holes))
+  if(!make_chart_mesh(closed, sm) || !flatten_holed(closed, sm, settings, uv, holes, later))
     return false;
   chart.uv.resize(nv);
   for(std::size_t v = 0; v < nv; ++v)
     chart.uv[v] = uv[std::size_t(merged[v])];
+  const bool deferred = later != nullptr && later->pending;
+  if(deferred) {
+    later->closed = std::move(closed);
+    later->merged = std::move(merged);
+  }
   measure_chart(chart);
+  if(deferred && !(chart.ok && chart.l2 <= settings.max_stretch))
+    finish_polish(chart, settings); // not taken as it is: polished now, as without `later`
   chart.slits_closed = chart.ok;
   return chart.ok;
 }
@@ -633,7 +654,7 @@ inline void flatten_chart(Chart_map& chart, const Chart_parameterization_setting
     chart.slits_closed = best_closed;
   };
   bool holes = false;
-  if(flatten_with_holes(chart, settings, holes)) {
+  if(flatten_with_holes(chart, settings, holes, later)) {
     if(chart.l2 <= settings.max_stretch)
       return;
     keep();
